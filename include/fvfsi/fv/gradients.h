@@ -1,0 +1,51 @@
+#pragma once
+// Gradients of a cell-centred scalar field (paper Appendix A, Eqs 37 and 39), and the weighted
+// least-squares cell gradient used by the Demirdzic-Muzaferija discretisation.
+
+#include <fvfsi/fv/cell_gradient.h>
+#include <fvfsi/mesh/fv_geometry.h>
+
+#include <vector>
+
+namespace fvfsi
+{
+  /**
+   * Vertex-based Gauss-Green cell gradient (Eq. 37): (grad phi)_P = 1/V_P sum_tau n_tau phi_tau S_tau,
+   * over the triangles tau of all faces of P, with phi_tau the mean of its corner values.
+   * Exact for linear fields on any mesh. Fills the owned cells and updates the ghosts.
+   */
+  template <int dim>
+  void gauss_green_gradient(const FVGeometry<dim>& geometry, const std::vector<double>& vertex_values,
+                            CellGradient<dim>& gradient);
+
+  /// Face tangential gradient (Eq. 39): (grad_s phi)_f from the vertex values of face f.
+  template <int dim>
+  dealii::Tensor<1, dim> tangential_gradient(const FaceGeometry<dim>& face,
+                                             const std::vector<double>& vertex_values)
+  {
+    dealii::Tensor<1, dim> g;
+    for (unsigned int i = 0; i < face.vertices.size(); ++i)
+      g += face.tangential_weight[i] * vertex_values[face.vertices[i]];
+    return g;
+  }
+
+  /**
+   * Weighted least-squares cell gradient from the face neighbours (and boundary-face values):
+   * minimise sum_f w_f (phi_P + G . d_f - phi_f)^2 with w_f = 1/|d_f|^2. The dim x dim normal
+   * matrices depend only on geometry and are inverted once in reinit().
+   */
+  template <int dim>
+  class LeastSquaresGradient
+  {
+  public:
+    explicit LeastSquaresGradient(const FVGeometry<dim>& geometry);
+    void reinit();
+    /// Fills the owned cells and updates the ghosts.
+    void compute(const CellVector& phi, const FaceVector& boundary_values,
+                 CellGradient<dim>& gradient) const;
+
+  private:
+    const FVGeometry<dim>& geometry;
+    std::vector<dealii::Tensor<2, dim>> inverse_normal_matrix;
+  };
+} // namespace fvfsi

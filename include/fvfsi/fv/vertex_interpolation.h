@@ -1,0 +1,48 @@
+#pragma once
+// Vertex values from cell-centre values by weighted least squares with a linear fit (paper
+// Appendix B, Eqs 40-42). The stencil of a vertex is every cell that shares it and, at the domain
+// boundary, every boundary face that shares it; weights are inverse squared distances.
+//
+// The fit is linear in the data, so reinit() stores, per vertex, the coefficient a_j of every
+// stencil value: phi_v = sum_j a_j phi_j. interpolate() is then a sparse product.
+//
+// Parallel: the p4est ghost layer holds every cell that shares a vertex with an owned cell, so
+// each rank has the whole stencil of each vertex of its owned cells. Stencils are sorted by global
+// cell number, so every rank that sees a vertex sums in the same order and gets the same bits.
+
+#include <fvfsi/fv/cell_gradient.h>
+#include <fvfsi/mesh/fv_geometry.h>
+
+#include <vector>
+
+namespace fvfsi
+{
+  template <int dim>
+  class VertexInterpolation
+  {
+  public:
+    explicit VertexInterpolation(const FVGeometry<dim>& geometry);
+
+    /// Recompute the least-squares coefficients; call after FVGeometry::reinit().
+    void reinit();
+
+    /// phi at the vertices of the locally owned cells, indexed by triangulation vertex index
+    /// (other entries untouched). `phi` must have up-to-date ghost values; `boundary_values` holds
+    /// phi_b on every boundary and ghost_boundary face.
+    void interpolate(const CellVector& phi, const FaceVector& boundary_values,
+                     std::vector<double>& vertex_values) const;
+
+    /// Triangulation indices of the vertices of locally owned cells.
+    const std::vector<unsigned int>& vertices() const { return vertex_list; }
+    /// Number of cells in the stencil of the i-th vertex of vertices().
+    unsigned int n_stencil_cells(unsigned int i) const { return cell_start[i + 1] - cell_start[i]; }
+
+  private:
+    const FVGeometry<dim>& geometry;
+    std::vector<unsigned int> vertex_list;
+    // CSR stencils: cells [cell_start[i], cell_start[i+1]) and boundary faces likewise.
+    std::vector<unsigned int> cell_start, stencil_cell;
+    std::vector<unsigned int> face_start, stencil_face;
+    std::vector<double> cell_coefficient, face_coefficient;
+  };
+} // namespace fvfsi

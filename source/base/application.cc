@@ -1,0 +1,200 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <fvfsi/base/application.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace fvfsi
+{
+  using namespace dealii;
+
+  namespace
+  {
+    const char* usage =
+      "usage: fvfsi [CASE.prm] [--set \"Section/Sub/Key=value\"]...\n"
+      "       fvfsi --print-parameters [CASE.prm]\n"
+      "       fvfsi --help\n"
+      "\n"
+      "Runs the scene that CASE.prm describes (without a file: the built-in default scene, a 2D\n"
+      "FV Poisson problem with a manufactured solution on a distorted mesh). `--set` overrides one\n"
+      "parameter after the file is read and may be repeated, e.g.\n"
+      "  fvfsi case.prm --set \"Mesh/Global refinements=5\" --set \"Output directory=/tmp/run5\"\n"
+      "`--print-parameters` prints every parameter with its value (default or from CASE.prm) and\n"
+      "its documentation. Run in parallel with `mpirun -np N fvfsi CASE.prm`.\n"
+      "Output: VTU/PVTU (+ .pvd) fields, text tables and summary.json in `Output directory`.\n";
+
+    /// The concise text of a deal.II exception (without the source-file banner).
+    std::string message_of(const std::exception& e)
+    {
+      if (const auto* d = dynamic_cast<const ExceptionBase*>(&e))
+      {
+        std::ostringstream info;
+        d->print_info(info);
+        std::string s = info.str();
+        while (!s.empty() && (s.back() == '\n' || s.back() == ' '))
+          s.pop_back();
+        return s.substr(s.find_first_not_of(" \n"));
+      }
+      return e.what();
+    }
+
+    void apply_override(ParameterHandler& prm, const std::string& assignment)
+    {
+      const auto eq = assignment.find('=');
+      if (eq == std::string::npos)
+        throw std::runtime_error("--set \"" + assignment + "\": expected \"Section/Key=value\"");
+      std::string path = Utilities::trim(assignment.substr(0, eq));
+      const std::string value = Utilities::trim(assignment.substr(eq + 1));
+      std::vector<std::string> sections;
+      for (auto slash = path.find('/'); slash != std::string::npos; slash = path.find('/'))
+      {
+        sections.push_back(Utilities::trim(path.substr(0, slash)));
+        path = path.substr(slash + 1);
+      }
+      for (const auto& s : sections)
+        prm.enter_subsection(s);
+      try
+      {
+        prm.set(Utilities::trim(path), value);
+      }
+      catch (const std::exception& e)
+      {
+        for (unsigned int i = 0; i < sections.size(); ++i)
+          prm.leave_subsection();
+        throw std::runtime_error("--set \"" + assignment + "\": " + message_of(e));
+      }
+      for (unsigned int i = 0; i < sections.size(); ++i)
+        prm.leave_subsection();
+    }
+
+    template <int dim>
+    void run_scene(const AllParameters& p, const std::string& prm_directory, Summary& summary,
+                   std::ostream& out)
+    {
+      if (p.run.scene == "poisson")
+      {
+        PoissonProblem<dim> problem(p.mesh, p.poisson, MPI_COMM_WORLD, prm_directory);
+        problem.run();
+        summary.set("n_cells", problem.results().n_cells);
+        problem.output_results(p.run.output_directory, summary);
+        (void)out;
+      }
+    }
+  } // namespace
+
+  void RunParameters::declare(ParameterHandler& prm)
+  {
+    prm.add_parameter("Dimension", dim, "Space dimension of the scene: 2 (true 2D) or 3.",
+                      Patterns::Integer(2, 3));
+    prm.add_parameter("Scene", scene, "What to run: poisson (the FV core verification problem).",
+                      Patterns::Selection("poisson"));
+    prm.add_parameter("Output directory", output_directory,
+                      "Directory for VTU/PVTU/PVD files, tables and summary.json (created if needed).");
+  }
+
+  AllParameters::AllParameters()
+  {
+    run.declare(prm);
+    mesh.patch_names = {{0, "left"}, {1, "right"}, {2, "bottom"}, {3, "top"}, {4, "back"}, {5, "front"}};
+    mesh.distortion = 0.25;
+    mesh.n_global_refinements = 5;
+    mesh.declare(prm);
+    poisson.declare(prm);
+  }
+
+  void read_parameters(AllParameters& parameters, const std::string& file,
+                       const std::vector<std::string>& overrides)
+  {
+    if (!file.empty())
+    {
+      if (!std::ifstream(file))
+        throw std::runtime_error("cannot open parameter file `" + file + "`");
+      try
+      {
+        parameters.prm.parse_input(file, "", false, false);
+      }
+      catch (const std::exception& e)
+      {
+        throw std::runtime_error("in parameter file `" + file + "`: " + message_of(e));
+      }
+    }
+    for (const auto& o : overrides)
+      apply_override(parameters.prm, o);
+  }
+
+  int run_application(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+  {
+    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    try
+    {
+      std::string file;
+      std::vector<std::string> overrides;
+      bool print = false;
+      for (unsigned int i = 0; i < args.size(); ++i)
+      {
+        if (args[i] == "--help" || args[i] == "-h")
+        {
+          if (root)
+            out << usage;
+          return 0;
+        }
+        else if (args[i] == "--print-parameters")
+          print = true;
+        else if (args[i] == "--set")
+        {
+          if (i + 1 == args.size())
+            throw std::runtime_error("--set needs an argument \"Section/Key=value\"");
+          overrides.push_back(args[++i]);
+        }
+        else if (args[i].rfind("-", 0) == 0)
+          throw std::runtime_error("unknown option `" + args[i] + "` (see fvfsi --help)");
+        else if (file.empty())
+          file = args[i];
+        else
+          throw std::runtime_error("more than one parameter file given: `" + file + "`, `" + args[i] + "`");
+      }
+
+      AllParameters parameters;
+      read_parameters(parameters, file, overrides);
+      if (print)
+      {
+        if (root)
+          parameters.prm.print_parameters(out, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
+        return 0;
+      }
+
+      Timer timer;
+      const std::string& dir = parameters.run.output_directory;
+      if (root)
+        std::filesystem::create_directories(dir);
+      MPI_Barrier(MPI_COMM_WORLD);
+      const std::string prm_directory =
+        file.empty() ? "." : std::filesystem::path(file).parent_path().string();
+      Summary summary;
+      summary.set("scene", parameters.run.scene);
+      summary.set("dim", parameters.run.dim);
+      summary.set("n_mpi_ranks", Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+      if (parameters.run.dim == 2)
+        run_scene<2>(parameters, prm_directory.empty() ? "." : prm_directory, summary, out);
+      else
+        run_scene<3>(parameters, prm_directory.empty() ? "." : prm_directory, summary, out);
+      summary.set("wall_seconds", Utilities::MPI::max(timer.wall_time(), MPI_COMM_WORLD));
+      if (root)
+      {
+        summary.write(dir + "/summary.json");
+        out << "fvfsi: wrote " << dir << "/summary.json\n";
+      }
+      return 0;
+    }
+    catch (const std::exception& e)
+    {
+      if (root)
+        err << "fvfsi: error: " << message_of(e) << "\n";
+      return 1;
+    }
+  }
+} // namespace fvfsi

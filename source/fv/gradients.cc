@@ -1,0 +1,80 @@
+#include <fvfsi/fv/gradients.h>
+
+namespace fvfsi
+{
+  using namespace dealii;
+
+  template <int dim>
+  void gauss_green_gradient(const FVGeometry<dim>& geometry, const std::vector<double>& vertex_values,
+                            CellGradient<dim>& gradient)
+  {
+    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+    {
+      Tensor<1, dim> sum;
+      for (const unsigned int f : geometry.cell_faces(c))
+      {
+        const auto& face = geometry.faces[f];
+        Tensor<1, dim> face_sum;
+        for (unsigned int i = 0; i < face.vertices.size(); ++i)
+          face_sum += face.gauss_green_weight[i] * vertex_values[face.vertices[i]];
+        sum += face.P == c ? face_sum : -face_sum;
+      }
+      gradient.set(c, sum / geometry.cell_volume[c]);
+    }
+    gradient.update_ghost_values();
+  }
+
+  template <int dim>
+  LeastSquaresGradient<dim>::LeastSquaresGradient(const FVGeometry<dim>& geometry) : geometry(geometry)
+  {
+    reinit();
+  }
+
+  template <int dim>
+  void LeastSquaresGradient<dim>::reinit()
+  {
+    inverse_normal_matrix.assign(geometry.n_owned_cells(), Tensor<2, dim>());
+    for (const auto& face : geometry.faces)
+    {
+      if (face.kind == FaceKind::ghost_boundary)
+        continue;
+      const Tensor<2, dim> dd = outer_product(face.d, face.d) / face.d.norm_square();
+      inverse_normal_matrix[face.P] += dd;
+      if (face.kind == FaceKind::interior)
+        inverse_normal_matrix[face.N] += dd;
+    }
+    for (auto& M : inverse_normal_matrix)
+      M = invert(M);
+  }
+
+  template <int dim>
+  void LeastSquaresGradient<dim>::compute(const CellVector& phi, const FaceVector& boundary_values,
+                                          CellGradient<dim>& gradient) const
+  {
+    std::vector<Tensor<1, dim>> rhs(geometry.n_owned_cells());
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      const auto& face = geometry.faces[f];
+      if (face.kind == FaceKind::ghost_boundary)
+        continue;
+      const double phi_P = phi.local_element(face.P);
+      const double phi_other =
+        face.N == invalid_cell ? boundary_values[f] : phi.local_element(face.N);
+      // Both sides see the same d d^T / |d|^2 and the same d (phi_N - phi_P) / |d|^2.
+      const Tensor<1, dim> term = face.d * (phi_other - phi_P) / face.d.norm_square();
+      rhs[face.P] += term;
+      if (face.kind == FaceKind::interior)
+        rhs[face.N] += term;
+    }
+    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+      gradient.set(c, inverse_normal_matrix[c] * rhs[c]);
+    gradient.update_ghost_values();
+  }
+
+  template void gauss_green_gradient(const FVGeometry<2>&, const std::vector<double>&,
+                                     CellGradient<2>&);
+  template void gauss_green_gradient(const FVGeometry<3>&, const std::vector<double>&,
+                                     CellGradient<3>&);
+  template class LeastSquaresGradient<2>;
+  template class LeastSquaresGradient<3>;
+} // namespace fvfsi

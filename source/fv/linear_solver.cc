@@ -1,0 +1,102 @@
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <fvfsi/fv/linear_solver.h>
+
+#include <stdexcept>
+
+namespace fvfsi
+{
+  using namespace dealii;
+
+  void LinearSolverParameters::declare(ParameterHandler& prm, const std::string& name)
+  {
+    prm.enter_subsection(name);
+    prm.add_parameter("Method", method, "Krylov method: CG for symmetric matrices, GMRES otherwise.",
+                      Patterns::Selection("CG|GMRES"));
+    prm.add_parameter("Preconditioner", preconditioner,
+                      "AMG (Trilinos ML, one V-cycle), ILU (Trilinos Ifpack ILU(0)) or Jacobi.",
+                      Patterns::Selection("AMG|ILU|Jacobi"));
+    prm.add_parameter("Residual reduction", reduction,
+                      "Stop when the residual has fallen by this factor (per linear solve).",
+                      Patterns::Double(0, 1));
+    prm.add_parameter("Absolute tolerance", absolute_tolerance,
+                      "... or when the residual (l2 norm over all cells) falls below this value.",
+                      Patterns::Double(0));
+    prm.add_parameter("Max iterations", max_iterations, "Iteration limit of one linear solve.",
+                      Patterns::Integer(1));
+    prm.leave_subsection();
+  }
+
+  LinearSolver::LinearSolver(const LinearSolverParameters& parameters) : parameters(parameters) {}
+
+  void LinearSolver::initialize(const TrilinosWrappers::SparseMatrix& matrix)
+  {
+    if (parameters.preconditioner == "AMG")
+    {
+      auto amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+      TrilinosWrappers::PreconditionAMG::AdditionalData data;
+      data.elliptic = true;
+      data.higher_order_elements = false;
+      data.smoother_sweeps = 2;
+      data.aggregation_threshold = 0.02;
+      amg->initialize(matrix, data);
+      preconditioner = std::move(amg);
+    }
+    else if (parameters.preconditioner == "ILU")
+    {
+      auto ilu = std::make_unique<TrilinosWrappers::PreconditionILU>();
+      ilu->initialize(matrix);
+      preconditioner = std::move(ilu);
+    }
+    else
+    {
+      auto jacobi = std::make_unique<TrilinosWrappers::PreconditionJacobi>();
+      jacobi->initialize(matrix);
+      preconditioner = std::move(jacobi);
+    }
+    x_trilinos.reinit(matrix.locally_owned_domain_indices(), matrix.get_mpi_communicator());
+    b_trilinos.reinit(x_trilinos);
+  }
+
+  unsigned int LinearSolver::solve(const TrilinosWrappers::SparseMatrix& matrix, CellVector& x,
+                                   const CellVector& b, const std::string& what)
+  {
+    if (!preconditioner)
+      initialize(matrix);
+    // Owned entries of a CellVector and of an owned-only Trilinos vector share their local order.
+    const unsigned int n = x.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      x_trilinos.trilinos_vector()[0][i] = x.local_element(i);
+      b_trilinos.trilinos_vector()[0][i] = b.local_element(i);
+    }
+    // Stop at `reduction` times the initial residual, or at the absolute tolerance; never ask
+    // for less than round-off of the right-hand side (Krylov methods stall there).
+    TrilinosWrappers::MPI::Vector r(b_trilinos);
+    const double r0 = matrix.residual(r, x_trilinos, b_trilinos);
+    const double round_off = 1e-13 * b_trilinos.l2_norm();
+    SolverControl control(parameters.max_iterations,
+                          std::max({parameters.absolute_tolerance, parameters.reduction * r0, round_off}),
+                          false, false);
+    if (r0 <= control.tolerance())
+      return 0;
+    try
+    {
+      if (parameters.method == "CG")
+        TrilinosWrappers::SolverCG(control).solve(matrix, x_trilinos, b_trilinos, *preconditioner);
+      else
+        TrilinosWrappers::SolverGMRES(control).solve(matrix, x_trilinos, b_trilinos, *preconditioner);
+    }
+    catch (const std::exception& e)
+    {
+      throw std::runtime_error("linear solve of " + what + " failed after " +
+                               std::to_string(control.last_step()) + " iterations (residual " +
+                               std::to_string(control.last_value()) + "): " + e.what());
+    }
+    for (unsigned int i = 0; i < n; ++i)
+      x.local_element(i) = x_trilinos.trilinos_vector()[0][i];
+    x.update_ghost_values();
+    return control.last_step();
+  }
+} // namespace fvfsi

@@ -1,0 +1,69 @@
+#include <fvfsi/io/summary.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+namespace fvfsi
+{
+  namespace
+  {
+    std::string number(const double x)
+    {
+      if (!std::isfinite(x))
+        return "null";
+      char buffer[32];
+      std::snprintf(buffer, sizeof buffer, "%.10g", x);
+      return buffer;
+    }
+
+    std::string quoted(const std::string& s)
+    {
+      std::string out = "\"";
+      for (const char c : s)
+      {
+        if (c == '"' || c == '\\')
+          out += '\\';
+        out += c;
+      }
+      return out + "\"";
+    }
+  } // namespace
+
+  void Summary::put(Entries& entries, const std::string& key, const std::string& json)
+  {
+    for (auto& [k, v] : entries)
+      if (k == key)
+      {
+        v = json;
+        return;
+      }
+    entries.emplace_back(key, json);
+  }
+
+  void Summary::set(const std::string& key, const double value) { put(top, key, number(value)); }
+  void Summary::set(const std::string& key, const std::string& value) { put(top, key, quoted(value)); }
+  void Summary::set_result(const std::string& key, const double value) { put(results, key, number(value)); }
+  void Summary::set_result(const std::string& key, const std::vector<double>& values)
+  {
+    std::string json = "[";
+    for (unsigned int i = 0; i < values.size(); ++i)
+      json += (i ? ", " : "") + number(values[i]);
+    put(results, key, json + "]");
+  }
+
+  void Summary::write(const std::string& file_name) const
+  {
+    std::ofstream out(file_name);
+    if (!out)
+      throw std::runtime_error("cannot write `" + file_name + "`");
+    out << "{\n";
+    for (const auto& [key, json] : top)
+      out << "  " << quoted(key) << ": " << json << ",\n";
+    out << "  \"results\": {";
+    for (unsigned int i = 0; i < results.size(); ++i)
+      out << (i ? "," : "") << "\n    " << quoted(results[i].first) << ": " << results[i].second;
+    out << "\n  }\n}\n";
+  }
+} // namespace fvfsi

@@ -1,0 +1,179 @@
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+
+#include <fvfsi/mesh/mesh_builder.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <stdexcept>
+
+namespace fvfsi
+{
+  using namespace dealii;
+
+  namespace
+  {
+    std::string resolve(const std::string& name, const std::string& directory)
+    {
+      if (name.empty() || name[0] == '/' || directory.empty())
+        return name;
+      return directory + "/" + name;
+    }
+
+    template <int dim>
+    void read_mesh_file(const std::string& file, Triangulation<dim>& tria)
+    {
+      std::ifstream in(file);
+      if (!in)
+        throw std::runtime_error("Mesh/File name: cannot open mesh file `" + file + "`");
+      GridIn<dim> grid_in;
+      grid_in.attach_triangulation(tria);
+      const std::string ext = file.substr(file.find_last_of('.') + 1);
+      try
+      {
+        if (ext == "msh")
+          grid_in.read_msh(in);
+        else if (ext == "inp" || ext == "ucd")
+          grid_in.read_ucd(in);
+        else if (ext == "vtk")
+          grid_in.read_vtk(in);
+        else
+          throw std::runtime_error("unknown mesh format `." + ext + "` (use .msh, .inp or .vtk)");
+      }
+      catch (const std::exception& e)
+      {
+        throw std::runtime_error("Mesh/File name: cannot read `" + file + "`: " + e.what());
+      }
+    }
+
+    /// splitmix64: a well-mixed 64-bit hash, used as a counter-based random number generator.
+    std::uint64_t mix(std::uint64_t z)
+    {
+      z += 0x9e3779b97f4a7c15ULL;
+      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+      z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+      return z ^ (z >> 31);
+    }
+
+    /// A unit vector in a random direction that depends only on the point and the seed.
+    template <int dim>
+    Tensor<1, dim> hashed_direction(const Point<dim>& p, const unsigned int seed)
+    {
+      std::uint64_t h = mix(seed);
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        std::uint64_t bits;
+        const double x = p[d] + 0.0; // +0.0 turns -0.0 into 0.0
+        std::memcpy(&bits, &x, sizeof bits);
+        h = mix(h ^ bits);
+      }
+      const auto uniform = [&h]() {
+        h = mix(h);
+        return (h >> 11) * (1.0 / 9007199254740992.0);
+      };
+      Tensor<1, dim> dir;
+      const double phi = 2 * M_PI * uniform();
+      if (dim == 2)
+      {
+        dir[0] = std::cos(phi);
+        dir[1] = std::sin(phi);
+      }
+      else
+      {
+        const double cos_theta = 2 * uniform() - 1, sin_theta = std::sqrt(1 - cos_theta * cos_theta);
+        dir[0] = sin_theta * std::cos(phi);
+        dir[1] = sin_theta * std::sin(phi);
+        dir[dim - 1] = cos_theta;
+      }
+      return dir;
+    }
+  } // namespace
+
+  template <int dim>
+  void distort_interior_vertices(parallel::distributed::Triangulation<dim>& tria, const double factor,
+                                 const unsigned int seed)
+  {
+    const unsigned int n = tria.n_vertices();
+    std::vector<double> min_edge(n, std::numeric_limits<double>::max());
+    std::vector<bool> on_boundary(n, false), of_owned_cell(n, false);
+    for (const auto& cell : tria.active_cell_iterators())
+    {
+      if (cell->is_artificial())
+        continue;
+      for (unsigned int l = 0; l < GeometryInfo<dim>::lines_per_cell; ++l)
+      {
+        const auto line = cell->line(l);
+        const double length = line->vertex(0).distance(line->vertex(1));
+        for (unsigned int v = 0; v < 2; ++v)
+          min_edge[line->vertex_index(v)] = std::min(min_edge[line->vertex_index(v)], length);
+      }
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          for (const unsigned int v : cell->face(f)->vertex_indices())
+            on_boundary[cell->face(f)->vertex_index(v)] = true;
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          of_owned_cell[cell->vertex_index(v)] = true;
+    }
+    // Only vertices of owned cells see all their edges (the ghost layer holds every cell that
+    // shares a vertex with an owned cell); their new positions are then sent to the ghost copies.
+    std::vector<bool> moved(n, false);
+    for (const auto& cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+        {
+          const unsigned int i = cell->vertex_index(v);
+          if (moved[i] || on_boundary[i] || !of_owned_cell[i])
+            continue;
+          cell->vertex(v) += factor * min_edge[i] * hashed_direction(cell->vertex(v), seed);
+          moved[i] = true;
+        }
+    tria.communicate_locally_moved_vertices(moved);
+  }
+
+  template <int dim>
+  void make_mesh(const MeshParameters& params, parallel::distributed::Triangulation<dim>& tria,
+                 const std::string& prm_directory)
+  {
+    if (params.generator == "file")
+    {
+      if (params.file_name.empty())
+        throw std::runtime_error("Mesh/Generator = file, but Mesh/File name is empty");
+      read_mesh_file(resolve(params.file_name, prm_directory), tria);
+    }
+    else
+    {
+      try
+      {
+        GridGenerator::generate_from_name_and_arguments(tria, params.generator,
+                                                        params.generator_arguments);
+      }
+      catch (const std::exception& e)
+      {
+        throw std::runtime_error("Mesh/Generator = `" + params.generator + "` with Mesh/Generator "
+                                 "arguments = `" + params.generator_arguments +
+                                 "` failed: " + e.what());
+      }
+    }
+    tria.refine_global(params.n_global_refinements);
+    for (const auto& cell : tria.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int f : cell->face_indices())
+          if (!cell->at_boundary(f) && (cell->face(f)->has_children() || cell->neighbor_is_coarser(f)))
+            throw std::runtime_error("the mesh has hanging faces; fvfsi needs a conforming mesh");
+    if (params.distortion > 0)
+      distort_interior_vertices(tria, params.distortion, params.distortion_seed);
+  }
+
+  template void make_mesh(const MeshParameters&, parallel::distributed::Triangulation<2>&,
+                          const std::string&);
+  template void make_mesh(const MeshParameters&, parallel::distributed::Triangulation<3>&,
+                          const std::string&);
+  template void distort_interior_vertices(parallel::distributed::Triangulation<2>&, double,
+                                          unsigned int);
+  template void distort_interior_vertices(parallel::distributed::Triangulation<3>&, double,
+                                          unsigned int);
+} // namespace fvfsi

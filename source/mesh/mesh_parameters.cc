@@ -1,0 +1,52 @@
+#include <fvfsi/mesh/mesh_parameters.h>
+
+#include <stdexcept>
+
+namespace fvfsi
+{
+  void MeshParameters::declare(dealii::ParameterHandler& prm)
+  {
+    prm.enter_subsection("Mesh");
+    prm.add_parameter("Generator", generator,
+                      "Name of a deal.II GridGenerator function (hyper_cube, subdivided_hyper_rectangle, "
+                      "hyper_shell, plate_with_a_hole, channel_with_cylinder, ...), or `file` to read "
+                      "`File name`.");
+    prm.add_parameter("Generator arguments", generator_arguments,
+                      "Arguments of the GridGenerator function, separated by `:` (points as `x, y`), "
+                      "as GridGenerator::generate_from_name_and_arguments reads them.");
+    prm.add_parameter("File name", file_name,
+                      "Mesh file read when Generator = file: Gmsh .msh, UCD .inp or VTK .vtk. A relative "
+                      "name is taken relative to the directory of the .prm file.");
+    prm.add_parameter("Global refinements", n_global_refinements,
+                      "Number of uniform refinements of the coarse mesh (curved manifolds are kept).",
+                      dealii::Patterns::Integer(0, 12));
+    prm.add_parameter("Distortion", distortion,
+                      "Random shift of every interior vertex, as a fraction of its shortest adjacent edge "
+                      "(for tests on irregular meshes; 0 = none, keep below 0.4).",
+                      dealii::Patterns::Double(0., 0.45));
+    prm.add_parameter("Distortion seed", distortion_seed, "Seed of the distortion's random numbers.");
+    prm.add_parameter("Patch names", patch_names,
+                      "Names of the boundary ids, e.g. `0: left, 1: right`; boundary conditions refer to "
+                      "patches by these names. An id without a name is called patch_<id>.");
+    prm.leave_subsection();
+  }
+
+  std::string MeshParameters::patch_name(const unsigned int id) const
+  {
+    const auto it = patch_names.find(id);
+    return it != patch_names.end() ? it->second : "patch_" + std::to_string(id);
+  }
+
+  unsigned int MeshParameters::patch_id(const std::string& name) const
+  {
+    for (const auto& [id, n] : patch_names)
+      if (n == name)
+        return id;
+    if (name.rfind("patch_", 0) == 0)
+      return std::stoul(name.substr(6));
+    std::string known;
+    for (const auto& [id, n] : patch_names)
+      known += " " + n;
+    throw std::runtime_error("unknown patch `" + name + "` (Mesh/Patch names has:" + known + ")");
+  }
+} // namespace fvfsi
