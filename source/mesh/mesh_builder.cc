@@ -1,5 +1,6 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <fvfsi/mesh/mesh_builder.h>
 
@@ -138,17 +139,20 @@ namespace fvfsi
   void make_mesh(const MeshParameters& params, parallel::distributed::Triangulation<dim>& tria,
                  const std::string& prm_directory)
   {
+    // The coarse mesh is built in a serial triangulation (identical on every rank), so that
+    // GridTools::distort_random gives the same coarse mesh for any number of ranks.
+    Triangulation<dim> coarse;
     if (params.generator == "file")
     {
       if (params.file_name.empty())
         throw std::runtime_error("Mesh/Generator = file, but Mesh/File name is empty");
-      read_mesh_file(resolve(params.file_name, prm_directory), tria);
+      read_mesh_file(resolve(params.file_name, prm_directory), coarse);
     }
     else
     {
       try
       {
-        GridGenerator::generate_from_name_and_arguments(tria, params.generator,
+        GridGenerator::generate_from_name_and_arguments(coarse, params.generator,
                                                         params.generator_arguments);
       }
       catch (const std::exception& e)
@@ -158,13 +162,16 @@ namespace fvfsi
                                  "` failed: " + e.what());
       }
     }
+    if (params.distortion > 0 && params.distort_coarse_mesh)
+      GridTools::distort_random(params.distortion, coarse, true, params.distortion_seed);
+    tria.copy_triangulation(coarse);
     tria.refine_global(params.n_global_refinements);
     for (const auto& cell : tria.active_cell_iterators())
       if (!cell->is_artificial())
         for (const unsigned int f : cell->face_indices())
           if (!cell->at_boundary(f) && (cell->face(f)->has_children() || cell->neighbor_is_coarser(f)))
             throw std::runtime_error("the mesh has hanging faces; fvfsi needs a conforming mesh");
-    if (params.distortion > 0)
+    if (params.distortion > 0 && !params.distort_coarse_mesh)
       distort_interior_vertices(tria, params.distortion, params.distortion_seed);
   }
 

@@ -24,6 +24,10 @@ namespace fvfsi
                       "Random shift of every interior vertex, as a fraction of its shortest adjacent edge "
                       "(for tests on irregular meshes; 0 = none, keep below 0.4).",
                       dealii::Patterns::Double(0., 0.45));
+    prm.add_parameter("Distort coarse mesh", distort_coarse_mesh,
+                      "true: distort the coarse mesh (GridTools::distort_random) and refine it, so "
+                      "that the meshes of a refinement sweep are subdivisions of one distorted mesh; "
+                      "false: distort the refined mesh, a new random mesh on every level.");
     prm.add_parameter("Distortion seed", distortion_seed, "Seed of the distortion's random numbers.");
     prm.add_parameter("Patch names", patch_names,
                       "Names of the boundary ids, e.g. `0: left, 1: right`; boundary conditions refer to "

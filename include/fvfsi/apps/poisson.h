@@ -46,7 +46,10 @@ namespace fvfsi
     double h = 0;                     ///< (domain measure / n_cells)^(1/dim) [m]
     double max_cell_error = 0;        ///< max_P |phi_P - phi(r_P)|
     double l2_cell_error = 0;         ///< sqrt(sum_P V_P (phi_P - phi(r_P))^2)
-    double max_face_gradient_error = 0; ///< max_f |n_f . (grad phi)_f - n_f . grad phi(r_f)|
+    /// max over interior faces of |n_f . (grad phi)_f - n_f . grad phi(r_f)| (Eq. 19)
+    double max_face_gradient_error = 0;
+    /// the same over Dirichlet boundary faces (Eq. 23, a one-sided difference: first order)
+    double max_boundary_face_gradient_error = 0;
     unsigned int correction_iterations = 0;
     unsigned int linear_iterations = 0;
   };

@@ -20,6 +20,9 @@ namespace fvfsi
     unsigned int n_global_refinements = 3;
     /// Random shift of interior vertices, as a fraction of the shortest adjacent edge (0 = none).
     double distortion = 0.0;
+    /// Distort the coarse mesh (then refine it: every mesh of a refinement sweep is a subdivision of
+    /// the same distorted mesh) instead of the refined one (a new random mesh on every level).
+    bool distort_coarse_mesh = false;
     /// Seed of the distortion's random numbers.
     unsigned int distortion_seed = 1;
     /// Names of boundary ids (patches), e.g. `0: left, 1: right`. Ids without a name are `patch_<id>`.
