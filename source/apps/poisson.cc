@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fvfsi/apps/poisson.h>
+#include <fvfsi/base/exceptions.h>
 #include <fvfsi/io/vtu_output.h>
 #include <fvfsi/mesh/mesh_builder.h>
 
@@ -44,13 +45,14 @@ namespace fvfsi
     try
     {
       f.initialize(dim == 2 ? "x,y,t" : "x,y,z,t", expression, {{"pi", numbers::PI}}, true);
+      // muparser parses on first use: evaluate once so that a syntax error shows up here.
+      for (unsigned int c = 0; c < f.n_components; ++c)
+        f.value(Point<dim>(), c);
     }
-    catch (const ExceptionBase& e)
+    catch (const std::exception& e)
     {
-      std::ostringstream info;
-      e.print_info(info);
       throw std::runtime_error(parameter_name + " = `" + expression + "` is not a valid expression " +
-                               "of " + (dim == 2 ? "x, y, t" : "x, y, z, t") + ": " + info.str());
+                               "of " + (dim == 2 ? "x, y, t" : "x, y, z, t") + ": " + concise_message(e));
     }
   }
 

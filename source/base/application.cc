@@ -2,6 +2,7 @@
 #include <deal.II/base/timer.h>
 
 #include <fvfsi/base/application.h>
+#include <fvfsi/base/exceptions.h>
 
 #include <filesystem>
 #include <fstream>
@@ -27,21 +28,6 @@ namespace fvfsi
       "its documentation. Run in parallel with `mpirun -np N fvfsi CASE.prm`.\n"
       "Output: VTU/PVTU (+ .pvd) fields, text tables and summary.json in `Output directory`.\n";
 
-    /// The concise text of a deal.II exception (without the source-file banner).
-    std::string message_of(const std::exception& e)
-    {
-      if (const auto* d = dynamic_cast<const ExceptionBase*>(&e))
-      {
-        std::ostringstream info;
-        d->print_info(info);
-        std::string s = info.str();
-        while (!s.empty() && (s.back() == '\n' || s.back() == ' '))
-          s.pop_back();
-        return s.substr(s.find_first_not_of(" \n"));
-      }
-      return e.what();
-    }
-
     void apply_override(ParameterHandler& prm, const std::string& assignment)
     {
       const auto eq = assignment.find('=');
@@ -65,7 +51,7 @@ namespace fvfsi
       {
         for (unsigned int i = 0; i < sections.size(); ++i)
           prm.leave_subsection();
-        throw std::runtime_error("--set \"" + assignment + "\": " + message_of(e));
+        throw std::runtime_error("--set \"" + assignment + "\": " + concise_message(e));
       }
       for (unsigned int i = 0; i < sections.size(); ++i)
         prm.leave_subsection();
@@ -119,7 +105,7 @@ namespace fvfsi
       }
       catch (const std::exception& e)
       {
-        throw std::runtime_error("in parameter file `" + file + "`: " + message_of(e));
+        throw std::runtime_error("in parameter file `" + file + "`: " + concise_message(e));
       }
     }
     for (const auto& o : overrides)
@@ -193,7 +179,7 @@ namespace fvfsi
     catch (const std::exception& e)
     {
       if (root)
-        err << "fvfsi: error: " << message_of(e) << "\n";
+        err << "fvfsi: error: " << concise_message(e) << "\n";
       return 1;
     }
   }

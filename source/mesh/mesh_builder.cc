@@ -2,6 +2,7 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <fvfsi/base/exceptions.h>
 #include <fvfsi/mesh/mesh_builder.h>
 
 #include <cmath>
@@ -46,7 +47,7 @@ namespace fvfsi
       }
       catch (const std::exception& e)
       {
-        throw std::runtime_error("Mesh/File name: cannot read `" + file + "`: " + e.what());
+        throw std::runtime_error("Mesh/File name: cannot read `" + file + "`: " + concise_message(e));
       }
     }
 
@@ -159,7 +160,7 @@ namespace fvfsi
       {
         throw std::runtime_error("Mesh/Generator = `" + params.generator + "` with Mesh/Generator "
                                  "arguments = `" + params.generator_arguments +
-                                 "` failed: " + e.what());
+                                 "` failed: " + concise_message(e));
       }
     }
     if (params.distortion > 0 && params.distort_coarse_mesh)

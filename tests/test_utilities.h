@@ -1,0 +1,52 @@
+#pragma once
+// Small helpers shared by fvfsi's tests: the deal.II test convention is that a test writes its
+// results to a file called `output` in its working directory (rank 0 only), which is then compared
+// with NAME.output by numdiff.
+
+#include <deal.II/base/mpi.h>
+
+#include <fvfsi/apps/poisson.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace fvfsi_test
+{
+  /// The `output` file on rank 0, a null stream elsewhere.
+  inline std::ofstream open_output()
+  {
+    std::ofstream out;
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      out.open("output");
+    return out;
+  }
+
+  inline std::string yes_no(const bool b) { return b ? "yes" : "NO"; }
+
+  /// printf-style formatting into a std::string.
+  template <typename... Args>
+  std::string format(const char* fmt, Args... args)
+  {
+    char buffer[256];
+    std::snprintf(buffer, sizeof buffer, fmt, args...);
+    return buffer;
+  }
+
+  /// A manufactured, non-polynomial Poisson problem on the unit square / cube, with Dirichlet
+  /// boundaries except a Neumann patch at x = 1.
+  template <int dim>
+  fvfsi::PoissonParameters manufactured_poisson()
+  {
+    fvfsi::PoissonParameters p;
+    if (dim == 3)
+    {
+      p.exact_solution = "exp(x)*sin(pi*y)*cos(pi*z)";
+      p.exact_gradient = "exp(x)*sin(pi*y)*cos(pi*z); pi*exp(x)*cos(pi*y)*cos(pi*z); "
+                         "-pi*exp(x)*sin(pi*y)*sin(pi*z)";
+      p.source = "(2*pi^2 - 1)*exp(x)*sin(pi*y)*cos(pi*z)";
+    }
+    p.neumann_patches = {"patch_1"};
+    return p;
+  }
+} // namespace fvfsi_test
