@@ -166,7 +166,7 @@ namespace fvfsi
   template <int dim>
   void PoissonProblem<dim>::compute_errors()
   {
-    double max_error = 0, l2 = 0, max_boundary_gradient_error = 0, max_gradient_error = 0, volume = 0;
+    double max_error = 0, l2 = 0, l2_gradient = 0, max_boundary_gradient_error = 0, max_gradient_error = 0, volume = 0;
     for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
     {
       const double e = phi.local_element(c) - exact.value(fv->centroid[c]);
@@ -185,12 +185,15 @@ namespace fvfsi
       const double e = laplacian->normal_gradient(f, phi, grad, bc) - face.n * g;
       double& max = face.N != invalid_cell ? max_gradient_error : max_boundary_gradient_error;
       max = std::max(max, std::abs(e));
+      if (face.N != invalid_cell && face.counted_here)
+        l2_gradient += e * e * face.area * face.d_n; // weighted by the face's share of volume
     }
     result.n_cells = fv->n_global_cells();
     result.h = std::pow(Utilities::MPI::sum(volume, comm) / result.n_cells, 1.0 / dim);
     result.max_cell_error = Utilities::MPI::max(max_error, comm);
     result.l2_cell_error = std::sqrt(Utilities::MPI::sum(l2, comm));
     result.max_face_gradient_error = Utilities::MPI::max(max_gradient_error, comm);
+    result.l2_face_gradient_error = std::sqrt(Utilities::MPI::sum(l2_gradient, comm));
     result.max_boundary_face_gradient_error = Utilities::MPI::max(max_boundary_gradient_error, comm);
   }
 
@@ -225,6 +228,7 @@ namespace fvfsi
     summary.set_result("max_cell_error", result.max_cell_error);
     summary.set_result("l2_cell_error", result.l2_cell_error);
     summary.set_result("max_face_gradient_error", result.max_face_gradient_error);
+    summary.set_result("l2_face_gradient_error", result.l2_face_gradient_error);
     summary.set_result("max_boundary_face_gradient_error", result.max_boundary_face_gradient_error);
     summary.set_result("h", result.h);
     summary.set_result("correction_iterations", result.correction_iterations);

@@ -48,6 +48,8 @@ namespace fvfsi
     double l2_cell_error = 0;         ///< sqrt(sum_P V_P (phi_P - phi(r_P))^2)
     /// max over interior faces of |n_f . (grad phi)_f - n_f . grad phi(r_f)| (Eq. 19)
     double max_face_gradient_error = 0;
+    /// sqrt(sum_f e_f^2 S_f d_fn) over interior faces, e_f the error above
+    double l2_face_gradient_error = 0;
     /// the same over Dirichlet boundary faces (Eq. 23, a one-sided difference: first order)
     double max_boundary_face_gradient_error = 0;
     unsigned int correction_iterations = 0;
