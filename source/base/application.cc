@@ -67,8 +67,15 @@ namespace fvfsi
         problem.run();
         summary.set("n_cells", problem.results().n_cells);
         problem.output_results(p.run.output_directory, summary);
-        (void)out;
       }
+      else if (p.run.scene == "solid")
+      {
+        SolidScene<dim> scene(p.mesh, p.solid, p.solid_scene, MPI_COMM_WORLD, prm_directory,
+                              p.run.output_directory);
+        scene.run();
+        scene.write_summary(summary);
+      }
+      (void)out;
     }
   } // namespace
 
@@ -76,8 +83,10 @@ namespace fvfsi
   {
     prm.add_parameter("Dimension", dim, "Space dimension of the scene: 2 (true 2D) or 3.",
                       Patterns::Integer(2, 3));
-    prm.add_parameter("Scene", scene, "What to run: poisson (the FV core verification problem).",
-                      Patterns::Selection("poisson"));
+    prm.add_parameter("Scene", scene,
+                      "What to run: poisson (the FV core verification problem) or solid (the solid "
+                      "solver alone).",
+                      Patterns::Selection("poisson|solid"));
     prm.add_parameter("Output directory", output_directory,
                       "Directory for VTU/PVTU/PVD files, tables and summary.json (created if needed).");
   }
@@ -90,6 +99,8 @@ namespace fvfsi
     mesh.n_global_refinements = 5;
     mesh.declare(prm);
     poisson.declare(prm);
+    solid.declare(prm);
+    solid_scene.declare(prm);
   }
 
   void read_parameters(AllParameters& parameters, const std::string& file,

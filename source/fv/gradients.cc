@@ -25,6 +25,28 @@ namespace fvfsi
   }
 
   template <int dim>
+  void gauss_linear_gradient(const FVGeometry<dim>& geometry, const CellVector& phi,
+                             const FaceVector& boundary_values, CellGradient<dim>& gradient)
+  {
+    std::vector<Tensor<1, dim>> sum(geometry.n_owned_cells());
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      const auto& face = geometry.faces[f];
+      if (face.kind == FaceKind::ghost_boundary)
+        continue;
+      const double phi_f = face.N == invalid_cell
+                             ? boundary_values[f]
+                             : face.w * phi.local_element(face.P) + (1 - face.w) * phi.local_element(face.N);
+      sum[face.P] += phi_f * face.S;
+      if (face.kind == FaceKind::interior)
+        sum[face.N] -= phi_f * face.S;
+    }
+    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+      gradient.set(c, sum[c] / geometry.cell_volume[c]);
+    gradient.update_ghost_values();
+  }
+
+  template <int dim>
   LeastSquaresGradient<dim>::LeastSquaresGradient(const FVGeometry<dim>& geometry) : geometry(geometry)
   {
     reinit();
@@ -75,6 +97,10 @@ namespace fvfsi
                                      CellGradient<2>&);
   template void gauss_green_gradient(const FVGeometry<3>&, const std::vector<double>&,
                                      CellGradient<3>&);
+  template void gauss_linear_gradient(const FVGeometry<2>&, const CellVector&, const FaceVector&,
+                                      CellGradient<2>&);
+  template void gauss_linear_gradient(const FVGeometry<3>&, const CellVector&, const FaceVector&,
+                                      CellGradient<3>&);
   template class LeastSquaresGradient<2>;
   template class LeastSquaresGradient<3>;
 } // namespace fvfsi

@@ -3,6 +3,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <fvfsi/base/exceptions.h>
+#include <fvfsi/mesh/benchmark_meshes.h>
 #include <fvfsi/mesh/mesh_builder.h>
 
 #include <cmath>
@@ -149,6 +150,8 @@ namespace fvfsi
         throw std::runtime_error("Mesh/Generator = file, but Mesh/File name is empty");
       read_mesh_file(resolve(params.file_name, prm_directory), coarse);
     }
+    else if (is_benchmark_mesh(params.generator))
+      make_benchmark_mesh(params.generator, params.generator_arguments, coarse);
     else
     {
       try

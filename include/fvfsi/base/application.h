@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <fvfsi/apps/poisson.h>
+#include <fvfsi/apps/solid_scene.h>
 #include <fvfsi/mesh/mesh_parameters.h>
 
 #include <ostream>
@@ -28,6 +29,8 @@ namespace fvfsi
     RunParameters run;
     MeshParameters mesh;
     PoissonParameters poisson;
+    SolidParameters solid;
+    SolidSceneParameters solid_scene;
     dealii::ParameterHandler prm;
   };
 

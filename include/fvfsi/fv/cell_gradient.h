@@ -1,5 +1,7 @@
 #pragma once
-// A cell-centred gradient field: one Tensor<1,dim> per locally owned and ghost cell.
+// A cell-centred vector field: one Tensor<1,dim> per locally owned and ghost cell, stored as dim
+// cell vectors (e.g. the displacement u, or the gradient of a scalar, for which the alias
+// CellGradient names the role).
 
 #include <fvfsi/mesh/fv_geometry.h>
 
@@ -8,14 +10,17 @@
 namespace fvfsi
 {
   template <int dim>
-  class CellGradient
+  class CellVectorField
   {
   public:
-    CellGradient() = default;
-    explicit CellGradient(const FVGeometry<dim>& geometry)
+    CellVectorField() = default;
+    explicit CellVectorField(const FVGeometry<dim>& geometry)
     {
       for (auto& c : components)
+      {
         c = geometry.make_cell_vector();
+        c.update_ghost_values(); // a new field is readable everywhere, ghosts included
+      }
     }
 
     dealii::Tensor<1, dim> operator[](const unsigned int cell) const
@@ -39,6 +44,10 @@ namespace fvfsi
 
     std::array<CellVector, dim> components; ///< d phi / d x_d
   };
+
+  /// The gradient of a cell scalar field.
+  template <int dim>
+  using CellGradient = CellVectorField<dim>;
 
   /// Values on faces, indexed like FVGeometry::faces (e.g. boundary-face values phi_b).
   using FaceVector = std::vector<double>;

@@ -18,6 +18,16 @@ namespace fvfsi
   void gauss_green_gradient(const FVGeometry<dim>& geometry, const std::vector<double>& vertex_values,
                             CellGradient<dim>& gradient);
 
+  /**
+   * Cell-based Gauss gradient with linearly interpolated face values ("Gauss linear", what
+   * OpenFOAM's solidDisplacementFoam uses): (grad phi)_P = 1/V_P sum_f S_f phi_f. Exact for linear
+   * fields only where face centres lie on the lines between cell centres. Fills the owned cells
+   * and updates the ghosts.
+   */
+  template <int dim>
+  void gauss_linear_gradient(const FVGeometry<dim>& geometry, const CellVector& phi,
+                             const FaceVector& boundary_values, CellGradient<dim>& gradient);
+
   /// Face tangential gradient (Eq. 39): (grad_s phi)_f from the vertex values of face f.
   template <int dim>
   dealii::Tensor<1, dim> tangential_gradient(const FaceGeometry<dim>& face,

@@ -1,0 +1,126 @@
+#pragma once
+// The solid solver (paper sections 2.2, 3.2, 3.3): total Lagrangian, displacement u at the cell
+// centres of the (never moving) reference mesh, momentum Eq. 8 discretised as Eq. 16 and solved
+// segregated, component by component (Eq. 25):
+//
+//   A_j du_j = R_j(u*),   u_j <- u*_j + du_j,
+//
+// where R is the full residual of Eq. 16 (inertia by BDF2, Eqs 17-18; face forces n.(Sigma.F^T) S_f
+// from the face gradient; body force) evaluated at the current iterate u*, and A_j the implicit
+// part: the Laplacian with K = 2 mu + lambda and the orthogonal face coefficients of Eqs 26-27,
+// plus the BDF2 mass term. At convergence of these outer iterations u solves Eq. 16 exactly; each
+// linear solve only needs about one order of residual reduction (section 3.3).
+//
+// The solver knows nothing about coupling: an external traction per boundary face can be set
+// (set_external_traction) and the displacement read (displacement, boundary_displacement).
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <fvfsi/fv/anderson_acceleration.h>
+#include <fvfsi/fv/cell_gradient.h>
+#include <fvfsi/fv/gradients.h>
+#include <fvfsi/fv/laplacian.h>
+#include <fvfsi/fv/linear_solver.h>
+#include <fvfsi/fv/vertex_interpolation.h>
+#include <fvfsi/mesh/fv_geometry.h>
+#include <fvfsi/mesh/mesh_parameters.h>
+#include <fvfsi/solid/constitutive.h>
+#include <fvfsi/solid/solid_parameters.h>
+
+#include <array>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace fvfsi
+{
+  template <int dim>
+  class SolidSolver
+  {
+  public:
+    SolidSolver(const FVGeometry<dim>& geometry, const MeshParameters& mesh_parameters,
+                const SolidParameters& parameters);
+
+    /// Advance by one time step (steady: solve the static problem) with outer iterations.
+    /// Returns the number of outer iterations. Throws std::runtime_error naming the time step if
+    /// the iterations diverge (non-finite values) or exceed the limit.
+    unsigned int solve_time_step();
+
+    double time() const { return current_time; }
+    unsigned int step() const { return time_step_number; }
+    const LameParameters& material() const { return lame; }
+
+    /// u at the cell centres [m] (ghost values up to date).
+    const CellVectorField<dim>& displacement() const { return u; }
+    /// grad u at cell c (G_ij = d u_j / d x_i).
+    dealii::Tensor<2, dim> cell_gradient(unsigned int c) const;
+    /// grad u at face f, as the chosen variant computes it for the face forces.
+    dealii::Tensor<2, dim> face_gradient(unsigned int f) const;
+    /// u on boundary face f [m] (fixed value, or extrapolated as in Eqs 23-24).
+    const dealii::Tensor<1, dim>& boundary_displacement(unsigned int f) const { return boundary_u[f]; }
+    /// Cauchy stress at cell c and at face f [Pa].
+    dealii::Tensor<2, dim> cell_stress(unsigned int c) const;
+    dealii::Tensor<2, dim> face_stress(unsigned int f) const;
+    /// Total force on a patch, sum over its faces of n.(Sigma.F^T) S_f [N] (2D: per unit depth).
+    dealii::Tensor<1, dim> patch_force(unsigned int patch) const;
+    /// u at a point inside the mesh (linear reconstruction in the cell that holds it), the same
+    /// on every rank. Throws if no cell holds the point.
+    dealii::Tensor<1, dim> point_displacement(const dealii::Point<dim>& x) const;
+
+    /// Cauchy traction [Pa] on the faces of `external traction` patches, indexed like
+    /// FVGeometry::faces (entries of other faces are ignored).
+    void set_external_traction(const std::vector<dealii::Tensor<1, dim>>& traction);
+
+  private:
+    struct FaceCondition
+    {
+      SolidBoundaryCondition::Type type;
+      int expression = -1; ///< index into `functions`, -1 for none
+    };
+
+    void setup_boundary_conditions(const MeshParameters& mesh_parameters);
+    void assemble_matrices(double mass_coefficient);
+    void update_gradients();
+    void update_boundary_values();
+    void find_constrained_vertices();
+    void impose_vertex_constraints();
+    dealii::Tensor<1, dim> boundary_traction(unsigned int f, const dealii::Tensor<2, dim>& G) const;
+    dealii::Tensor<1, dim> face_force_density(unsigned int f) const;
+    void compute_residual(std::array<CellVector, dim>& residual) const;
+    void shift_time_levels();
+
+    const FVGeometry<dim>& geometry;
+    SolidParameters parameters;
+    LameParameters lame;
+    dealii::ConditionalOStream pcout;
+    VertexInterpolation<dim> vertex_interpolation;
+    LeastSquaresGradient<dim> least_squares;
+    Laplacian<dim> laplacian;
+
+    std::vector<FaceCondition> face_condition; ///< per face (boundary faces only)
+    std::vector<std::unique_ptr<dealii::FunctionParser<dim>>> functions;
+    dealii::FunctionParser<dim> body_force;
+    std::vector<dealii::Tensor<1, dim>> external_traction;
+
+    std::array<dealii::TrilinosWrappers::SparseMatrix, dim> matrix;
+    std::array<std::unique_ptr<LinearSolver>, dim> linear_solver;
+    double assembled_mass_coefficient = -1;
+    std::unique_ptr<AndersonAcceleration> acceleration;
+
+    // State: u and its history for BDF2 (u^[m-1], u^[m-2], v^[m-1], v^[m-2]).
+    CellVectorField<dim> u, u_old, u_old2, v_old, v_old2;
+    double current_time = 0;
+    unsigned int time_step_number = 0;
+
+    // Derived from u in update_gradients().
+    std::array<CellGradient<dim>, dim> grad_u;       ///< grad_u[j] = grad u_j
+    std::array<std::vector<double>, dim> vertex_u;   ///< vertex values of u_j
+    std::vector<dealii::Tensor<1, dim>> boundary_u;  ///< u_b per boundary face
+    std::vector<dealii::Tensor<2, dim>> boundary_G;  ///< grad u per boundary face (Eq. 24 iterate)
+    /// Vertices on symmetry planes (with the plane's normal) and on displacement boundaries.
+    std::vector<std::pair<unsigned int, dealii::Tensor<1, dim>>> symmetry_vertex_normals;
+    std::map<unsigned int, const dealii::FunctionParser<dim>*> fixed_vertex_function;
+  };
+} // namespace fvfsi

@@ -1,0 +1,92 @@
+#include <deal.II/base/utilities.h>
+
+#include <fvfsi/solid/solid_parameters.h>
+
+#include <stdexcept>
+
+namespace fvfsi
+{
+  using namespace dealii;
+
+  void SolidParameters::declare(ParameterHandler& prm)
+  {
+    prm.enter_subsection("Solid");
+    prm.add_parameter("Model", model,
+                      "St. Venant-Kirchhoff (finite strain, total Lagrangian, Eqs 4-9) or linear "
+                      "elastic (small strain: q without its nonlinear terms).",
+                      Patterns::Selection("linear elastic|St. Venant-Kirchhoff"));
+    prm.add_parameter("Plane", plane, "2D only: plane strain or plane stress.",
+                      Patterns::Selection("plane strain|plane stress"));
+    prm.add_parameter("Young's modulus", E, "E [Pa].", Patterns::Double(0));
+    prm.add_parameter("Poisson's ratio", nu, "nu [-].", Patterns::Double(-0.999, 0.4999));
+    prm.add_parameter("Density", rho, "rho_0 [kg/m^3] (reference configuration).", Patterns::Double(0));
+    prm.add_parameter("Body force", body_force,
+                      "b [m/s^2] per unit mass, dim expressions of x, y[, z], t separated by `;`.");
+    prm.add_parameter("Variant", variant,
+                      "Face gradient: present (paper: central normal part + vertex Gauss-Green "
+                      "tangential part, also on boundary faces), Demirdzic-Muzaferija (least-squares "
+                      "cell gradients interpolated to faces), Jasak-Weller (cell-centred Gauss "
+                      "gradients, as OpenFOAM's solidDisplacementFoam).",
+                      Patterns::Selection("present|Demirdzic-Muzaferija|Jasak-Weller"));
+    prm.add_parameter("Transient", transient,
+                      "true: inertia with the BDF2 (backward) scheme, Eqs 17-18, first step backward "
+                      "Euler; false: steady.");
+    prm.add_parameter("Time step", time_step, "dt [s] (steady: one pseudo step).", Patterns::Double(0));
+    prm.add_parameter("End time", end_time, "[s].", Patterns::Double(0));
+    prm.add_parameter("Outer tolerance", outer_tolerance,
+                      "Stop the outer (segregated) iterations of a time step when "
+                      "max |du| / max |u| is below this.",
+                      Patterns::Double(0));
+    prm.add_parameter("Max outer iterations", max_outer_iterations,
+                      "Limit of outer iterations per time step (exceeding it stops the run).",
+                      Patterns::Integer(1));
+    prm.add_parameter("Outer acceleration depth", acceleration_depth,
+                      "Anderson acceleration of the outer iterations (the least-squares model of "
+                      "IQN-ILS): number of kept iterate differences; 0 = plain segregated "
+                      "iterations as in the paper.",
+                      Patterns::Integer(0, 50));
+    const std::string syntax =
+      " Syntax: `patch: expression | patch: expression`, vector components separated by `;`.";
+    prm.add_parameter("Fixed displacement", fixed_displacement,
+                      "Patches with a given displacement u(x, t) [m]." + syntax);
+    prm.add_parameter("Traction", traction,
+                      "Patches with a given Cauchy traction t(x, t) [Pa] (Eq. 24; in finite strain "
+                      "scaled by the deformed area ratio S'/S)." + syntax);
+    prm.add_parameter("Pressure", pressure,
+                      "Patches with a given pressure p(x, t) [Pa]: traction -p n' on the deformed "
+                      "face." + syntax);
+    prm.add_parameter("Symmetry", symmetry, "Symmetry-plane patches, comma separated.");
+    prm.add_parameter("External traction", external_traction,
+                      "Patches whose Cauchy traction is set per face by another solver (FSI), comma "
+                      "separated.");
+    prm.leave_subsection();
+    solver.reduction = 0.1;
+    solver.declare(prm, "Solid linear solver");
+  }
+
+  std::vector<SolidBoundaryCondition> SolidParameters::boundary_conditions() const
+  {
+    using Type = SolidBoundaryCondition::Type;
+    std::vector<SolidBoundaryCondition> bcs;
+    const auto with_values = [&bcs](const std::string& entry, const std::string& name, Type type) {
+      for (const auto& item : Utilities::split_string_list(entry, '|'))
+      {
+        const auto colon = item.find(':');
+        if (colon == std::string::npos)
+          throw std::runtime_error("Solid/" + name + ": `" + item + "` is not `patch: expression`");
+        bcs.push_back({Utilities::trim(item.substr(0, colon)), type,
+                       Utilities::trim(item.substr(colon + 1))});
+      }
+    };
+    const auto names_only = [&bcs](const std::string& entry, Type type) {
+      for (const auto& item : Utilities::split_string_list(entry, ','))
+        bcs.push_back({item, type, ""});
+    };
+    with_values(fixed_displacement, "Fixed displacement", Type::fixed_displacement);
+    with_values(traction, "Traction", Type::traction);
+    with_values(pressure, "Pressure", Type::pressure);
+    names_only(symmetry, Type::symmetry);
+    names_only(external_traction, Type::external_traction);
+    return bcs;
+  }
+} // namespace fvfsi
