@@ -9,6 +9,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <string>
 
 namespace fvfsi_test
@@ -47,6 +48,20 @@ namespace fvfsi_test
       p.source = "(2*pi^2 - 1)*exp(x)*sin(pi*y)*cos(pi*z)";
     }
     p.neumann_patches = {"patch_1"};
+    return p;
+  }
+} // namespace fvfsi_test
+
+#include <fvfsi/base/application.h>
+
+namespace fvfsi_test
+{
+  /// The parameters of a shipped .prm file (prm/NAME.prm) with overrides, as fvfsi would read them.
+  inline std::unique_ptr<fvfsi::AllParameters> shipped_case(const std::string& name,
+                                                            const std::vector<std::string>& overrides)
+  {
+    auto p = std::make_unique<fvfsi::AllParameters>();
+    fvfsi::read_parameters(*p, std::string(FVFSI_SOURCE_DIR) + "/prm/" + name + ".prm", overrides);
     return p;
   }
 } // namespace fvfsi_test

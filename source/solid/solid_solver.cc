@@ -488,7 +488,7 @@ namespace fvfsi
     {
       const auto cell_and_point = GridTools::find_active_cell_around_point(
         StaticMappingQ1<dim>::mapping, geometry.triangulation(), x, std::vector<bool>(), 1e-10);
-      if (cell_and_point.first->is_locally_owned())
+      if (cell_and_point.first.state() == IteratorState::valid && cell_and_point.first->is_locally_owned())
       {
         const auto c = geometry.partitioner()->global_to_local(
           typename DoFHandler<dim>::active_cell_iterator(&geometry.triangulation(), cell_and_point.first->level(),
