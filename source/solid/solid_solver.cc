@@ -438,6 +438,9 @@ namespace fvfsi
       max_du = Utilities::MPI::max(max_du, geometry.comm());
       max_u = Utilities::MPI::max(max_u, geometry.comm());
       change = max_du / std::max(max_u, 1e-300);
+      if (k % 500 == 0)
+        pcout << "fvfsi: solid time step " << time_step_number << ", outer iteration " << k
+              << ": relative change " << change << " (tolerance " << parameters.outer_tolerance << ")\n";
       if (!std::isfinite(max_u) || !std::isfinite(max_du))
         throw std::runtime_error("Solid: displacement is not finite at time step " +
                                  std::to_string(time_step_number) + " (t = " + std::to_string(current_time) +
