@@ -45,6 +45,11 @@ namespace fvfsi
                       "IQN-ILS): number of kept iterate differences; 0 = plain segregated "
                       "iterations as in the paper.",
                       Patterns::Integer(0, 50));
+    prm.add_parameter("Boundary sweeps", boundary_sweeps,
+                      "Passes of the boundary-value (Eqs 23-24), vertex-value and gradient update per "
+                      "outer iteration: they depend on each other, and converging them makes the "
+                      "outer iteration a fixed-point map of u alone (needed by the acceleration).",
+                      Patterns::Integer(1, 100));
     const std::string syntax =
       " Syntax: `patch: expression | patch: expression`, vector components separated by `;`.";
     prm.add_parameter("Fixed displacement", fixed_displacement,

@@ -11,231 +11,238 @@
 
 namespace fvfsi
 {
-  using namespace dealii;
-  using Type = SolidBoundaryCondition::Type;
+using namespace dealii;
+using Type = SolidBoundaryCondition::Type;
 
-  namespace
+namespace
+{
+bool takes_traction(const Type t)
+{
+  return t == Type::traction || t == Type::pressure || t == Type::external_traction;
+}
+} // namespace
+
+template <int dim>
+SolidSolver<dim>::SolidSolver(const FVGeometry<dim>& geometry,
+                              const MeshParameters& mesh_parameters,
+                              const SolidParameters& parameters)
+    : geometry(geometry), parameters(parameters),
+      pcout(std::cout, Utilities::MPI::this_mpi_process(geometry.comm()) == 0),
+      vertex_interpolation(geometry), least_squares(geometry), laplacian(geometry), body_force(dim)
+{
+  const double E = parameters.E, nu = parameters.nu;
+  lame.mu = E / (2 * (1 + nu));
+  lame.lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+  if (dim == 2 && parameters.plane == "plane stress")
+    lame.lambda = 2 * lame.mu * lame.lambda / (lame.lambda + 2 * lame.mu);
+  lame.nonlinear = parameters.model == "St. Venant-Kirchhoff";
+  initialize_function(body_force, parameters.body_force, "Solid/Body force");
+  setup_boundary_conditions(mesh_parameters);
+  find_constrained_vertices();
+
+  for (auto* field : {&u, &u_old, &u_old2, &v_old, &v_old2})
+    *field = CellVectorField<dim>(geometry);
+  for (auto& g : grad_u)
+    g = CellGradient<dim>(geometry);
+  for (auto& v : vertex_u)
+    v.assign(geometry.vertices().size(), 0.0);
+  boundary_u.assign(geometry.faces.size(), Tensor<1, dim>());
+  boundary_G.assign(geometry.faces.size(), Tensor<2, dim>());
+  external_traction.assign(geometry.faces.size(), Tensor<1, dim>());
+  if (parameters.acceleration_depth > 0)
+    acceleration =
+        std::make_unique<AndersonAcceleration>(geometry.comm(), parameters.acceleration_depth);
+  for (unsigned int j = 0; j < dim; ++j)
   {
-    bool takes_traction(const Type t)
-    {
-      return t == Type::traction || t == Type::pressure || t == Type::external_traction;
-    }
-  } // namespace
-
-  template <int dim>
-  SolidSolver<dim>::SolidSolver(const FVGeometry<dim>& geometry, const MeshParameters& mesh_parameters,
-                                const SolidParameters& parameters)
-    : geometry(geometry)
-    , parameters(parameters)
-    , pcout(std::cout, Utilities::MPI::this_mpi_process(geometry.comm()) == 0)
-    , vertex_interpolation(geometry)
-    , least_squares(geometry)
-    , laplacian(geometry)
-    , body_force(dim)
-  {
-    const double E = parameters.E, nu = parameters.nu;
-    lame.mu = E / (2 * (1 + nu));
-    lame.lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
-    if (dim == 2 && parameters.plane == "plane stress")
-      lame.lambda = 2 * lame.mu * lame.lambda / (lame.lambda + 2 * lame.mu);
-    lame.nonlinear = parameters.model == "St. Venant-Kirchhoff";
-    initialize_function(body_force, parameters.body_force, "Solid/Body force");
-    setup_boundary_conditions(mesh_parameters);
-    find_constrained_vertices();
-
-    for (auto* field : {&u, &u_old, &u_old2, &v_old, &v_old2})
-      *field = CellVectorField<dim>(geometry);
-    for (auto& g : grad_u)
-      g = CellGradient<dim>(geometry);
-    for (auto& v : vertex_u)
-      v.assign(geometry.vertices().size(), 0.0);
-    boundary_u.assign(geometry.faces.size(), Tensor<1, dim>());
-    boundary_G.assign(geometry.faces.size(), Tensor<2, dim>());
-    external_traction.assign(geometry.faces.size(), Tensor<1, dim>());
-    if (parameters.acceleration_depth > 0)
-      acceleration = std::make_unique<AndersonAcceleration>(geometry.comm(), parameters.acceleration_depth);
-    for (unsigned int j = 0; j < dim; ++j)
-    {
-      laplacian.reinit_matrix(matrix[j]);
-      linear_solver[j] = std::make_unique<LinearSolver>(parameters.solver);
-    }
+    laplacian.reinit_matrix(matrix[j]);
+    linear_solver[j] = std::make_unique<LinearSolver>(parameters.solver);
   }
+}
 
-  template <int dim>
-  void SolidSolver<dim>::setup_boundary_conditions(const MeshParameters& mesh_parameters)
+template <int dim>
+void SolidSolver<dim>::setup_boundary_conditions(const MeshParameters& mesh_parameters)
+{
+  std::map<unsigned int, FaceCondition> by_patch;
+  for (const auto& bc : parameters.boundary_conditions())
   {
-    std::map<unsigned int, FaceCondition> by_patch;
-    for (const auto& bc : parameters.boundary_conditions())
+    FaceCondition condition{bc.type, -1};
+    if (!bc.expression.empty())
     {
-      FaceCondition condition{bc.type, -1};
-      if (!bc.expression.empty())
-      {
-        const unsigned int n_components = bc.type == Type::pressure ? 1 : dim;
-        functions.push_back(std::make_unique<FunctionParser<dim>>(n_components));
-        initialize_function(*functions.back(), bc.expression, "Solid boundary condition on " + bc.patch);
-        condition.expression = functions.size() - 1;
-      }
-      by_patch[mesh_parameters.patch_id(bc.patch)] = condition;
+      const unsigned int n_components = bc.type == Type::pressure ? 1 : dim;
+      functions.push_back(std::make_unique<FunctionParser<dim>>(n_components));
+      initialize_function(*functions.back(), bc.expression,
+                          "Solid boundary condition on " + bc.patch);
+      condition.expression = functions.size() - 1;
     }
-    face_condition.resize(geometry.faces.size());
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-      if (geometry.faces[f].N == invalid_cell)
-      {
-        const auto it = by_patch.find(geometry.faces[f].patch);
-        if (it == by_patch.end())
-          throw std::runtime_error("Solid: patch `" + mesh_parameters.patch_name(geometry.faces[f].patch) +
-                                   "` has no boundary condition (use a traction of 0; 0 for a free "
-                                   "surface)");
-        face_condition[f] = it->second;
-      }
+    by_patch[mesh_parameters.patch_id(bc.patch)] = condition;
   }
+  face_condition.resize(geometry.faces.size());
+  for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    if (geometry.faces[f].N == invalid_cell)
+    {
+      const auto it = by_patch.find(geometry.faces[f].patch);
+      if (it == by_patch.end())
+        throw std::runtime_error("Solid: patch `" +
+                                 mesh_parameters.patch_name(geometry.faces[f].patch) +
+                                 "` has no boundary condition (use a traction of 0; 0 for a free "
+                                 "surface)");
+      face_condition[f] = it->second;
+    }
+}
 
-  template <int dim>
-  void SolidSolver<dim>::assemble_matrices(const double mass_coefficient)
-  {
-    // A_j: the orthogonal part of Eq. 19 with K = 2 mu + lambda (Eqs 26-27), Dirichlet faces
-    // (fixed displacement; symmetry for the normal component, weight n_j^2) and the mass term.
-    ScalarBoundaryConditions<dim> bc;
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-      if (geometry.faces[f].N == invalid_cell)
-        bc.patch_type[geometry.faces[f].patch] =
+template <int dim>
+void SolidSolver<dim>::assemble_matrices(const double mass_coefficient)
+{
+  // A_j: the orthogonal part of Eq. 19 with K = 2 mu + lambda (Eqs 26-27), Dirichlet faces
+  // (fixed displacement; symmetry for the normal component, weight n_j^2) and the mass term.
+  ScalarBoundaryConditions<dim> bc;
+  for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    if (geometry.faces[f].N == invalid_cell)
+      bc.patch_type[geometry.faces[f].patch] =
           takes_traction(face_condition[f].type) ? BoundaryType::neumann : BoundaryType::dirichlet;
-    bc.value.assign(geometry.faces.size(), 0.0);
-    CellVector unused_rhs = geometry.make_cell_vector();
-    for (unsigned int j = 0; j < dim; ++j)
-    {
-      FaceVector gamma(geometry.faces.size(), lame.K());
-      for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-        if (geometry.faces[f].N == invalid_cell && face_condition[f].type == Type::symmetry)
-          gamma[f] *= geometry.faces[f].n[j] * geometry.faces[f].n[j];
-      matrix[j] = 0;
-      laplacian.assemble(gamma, bc, matrix[j], unused_rhs);
-      for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
-        matrix[j].add(geometry.global_index(c), geometry.global_index(c),
-                      parameters.rho * geometry.cell_volume[c] * mass_coefficient);
-      matrix[j].compress(VectorOperation::add);
-      linear_solver[j]->initialize(matrix[j]);
-    }
-    assembled_mass_coefficient = mass_coefficient;
-  }
-
-  template <int dim>
-  Tensor<2, dim> SolidSolver<dim>::cell_gradient(const unsigned int c) const
+  bc.value.assign(geometry.faces.size(), 0.0);
+  CellVector unused_rhs = geometry.make_cell_vector();
+  for (unsigned int j = 0; j < dim; ++j)
   {
-    Tensor<2, dim> G;
+    FaceVector gamma(geometry.faces.size(), lame.K());
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+      if (geometry.faces[f].N == invalid_cell && face_condition[f].type == Type::symmetry)
+        gamma[f] *= geometry.faces[f].n[j] * geometry.faces[f].n[j];
+    matrix[j] = 0;
+    laplacian.assemble(gamma, bc, matrix[j], unused_rhs);
+    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+      matrix[j].add(geometry.global_index(c), geometry.global_index(c),
+                    parameters.rho * geometry.cell_volume[c] * mass_coefficient);
+    matrix[j].compress(VectorOperation::add);
+    linear_solver[j]->initialize(matrix[j]);
+  }
+  assembled_mass_coefficient = mass_coefficient;
+}
+
+template <int dim>
+Tensor<2, dim> SolidSolver<dim>::cell_gradient(const unsigned int c) const
+{
+  Tensor<2, dim> G;
+  for (unsigned int j = 0; j < dim; ++j)
+  {
+    const Tensor<1, dim> g = grad_u[j][c];
+    for (unsigned int i = 0; i < dim; ++i)
+      G[i][j] = g[i];
+  }
+  return G;
+}
+
+template <int dim>
+Tensor<2, dim> SolidSolver<dim>::face_gradient(const unsigned int f) const
+{
+  const auto& face = geometry.faces[f];
+  const bool boundary = face.N == invalid_cell;
+  if (boundary && takes_traction(face_condition[f].type))
+    return boundary_G[f]; // Eq. 24
+  const Tensor<2, dim> G_P = cell_gradient(face.P);
+  const Tensor<1, dim> u_P = u[face.P];
+  // Normal derivative vector g_n = n . grad u: Eq. 19 inside, Eq. 23 on displacement faces.
+  Tensor<1, dim> g_n;
+  if (boundary)
+    g_n = (boundary_u[f] - u_P - face.k_P * G_P) / face.d_n;
+  else
+  {
+    const Tensor<2, dim> G_N = cell_gradient(face.N);
+    g_n = (u[face.N] - u_P - face.k_N * G_N - face.k_P * G_P) / face.d_n;
+  }
+  if (parameters.variant == "present")
+  {
+    // Tangential part from the vertex values (Eq. 39), also on boundary faces.
+    Tensor<2, dim> G = outer_product(face.n, g_n);
     for (unsigned int j = 0; j < dim; ++j)
     {
-      const Tensor<1, dim> g = grad_u[j][c];
+      const Tensor<1, dim> t = tangential_gradient(face, vertex_u[j]);
       for (unsigned int i = 0; i < dim; ++i)
-        G[i][j] = g[i];
+        G[i][j] += t[i];
     }
     return G;
   }
+  // Demirdzic-Muzaferija and Jasak-Weller: the interpolated cell gradient (the cell's own at a
+  // boundary), with its normal part replaced by g_n.
+  const Tensor<2, dim> G_bar = boundary ? G_P : face.w * G_P + (1 - face.w) * cell_gradient(face.N);
+  return G_bar + outer_product(face.n, g_n - face.n * G_bar);
+}
 
-  template <int dim>
-  Tensor<2, dim> SolidSolver<dim>::face_gradient(const unsigned int f) const
+template <int dim>
+Tensor<1, dim> SolidSolver<dim>::boundary_traction(const unsigned int f,
+                                                   const Tensor<2, dim>& G) const
+{
+  // The force per reference area of a Cauchy traction t: t S'/S (Eq. 24), S'/S from Nanson.
+  const auto& face = geometry.faces[f];
+  const auto& condition = face_condition[f];
+  const Tensor<1, dim> area_ratio_n = deformed_area_vector(G, face.n, lame);
+  if (condition.type == Type::external_traction)
+    return area_ratio_n.norm() * external_traction[f];
+  const auto& fn = *functions[condition.expression];
+  if (condition.type == Type::pressure)
+    return -fn.value(face.centre) * area_ratio_n;
+  Tensor<1, dim> t;
+  for (unsigned int d = 0; d < dim; ++d)
+    t[d] = fn.value(face.centre, d);
+  return area_ratio_n.norm() * t;
+}
+
+template <int dim>
+void SolidSolver<dim>::update_boundary_values()
+{
+  for (unsigned int f = 0; f < geometry.faces.size(); ++f)
   {
     const auto& face = geometry.faces[f];
-    const bool boundary = face.N == invalid_cell;
-    if (boundary && takes_traction(face_condition[f].type))
-      return boundary_G[f]; // Eq. 24
-    const Tensor<2, dim> G_P = cell_gradient(face.P);
-    const Tensor<1, dim> u_P = u[face.P];
-    // Normal derivative vector g_n = n . grad u: Eq. 19 inside, Eq. 23 on displacement faces.
-    Tensor<1, dim> g_n;
-    if (boundary)
-      g_n = (boundary_u[f] - u_P - face.k_P * G_P) / face.d_n;
-    else
-    {
-      const Tensor<2, dim> G_N = cell_gradient(face.N);
-      g_n = (u[face.N] - u_P - face.k_N * G_N - face.k_P * G_P) / face.d_n;
-    }
-    if (parameters.variant == "present")
-    {
-      // Tangential part from the vertex values (Eq. 39), also on boundary faces.
-      Tensor<2, dim> G = outer_product(face.n, g_n);
-      for (unsigned int j = 0; j < dim; ++j)
-      {
-        const Tensor<1, dim> t = tangential_gradient(face, vertex_u[j]);
-        for (unsigned int i = 0; i < dim; ++i)
-          G[i][j] += t[i];
-      }
-      return G;
-    }
-    // Demirdzic-Muzaferija and Jasak-Weller: the interpolated cell gradient (the cell's own at a
-    // boundary), with its normal part replaced by g_n.
-    const Tensor<2, dim> G_bar = boundary ? G_P : face.w * G_P + (1 - face.w) * cell_gradient(face.N);
-    return G_bar + outer_product(face.n, g_n - face.n * G_bar);
-  }
-
-  template <int dim>
-  Tensor<1, dim> SolidSolver<dim>::boundary_traction(const unsigned int f, const Tensor<2, dim>& G) const
-  {
-    // The force per reference area of a Cauchy traction t: t S'/S (Eq. 24), S'/S from Nanson.
-    const auto& face = geometry.faces[f];
+    if (face.kind != FaceKind::boundary)
+      continue;
     const auto& condition = face_condition[f];
-    const Tensor<1, dim> area_ratio_n = deformed_area_vector(G, face.n, lame);
-    if (condition.type == Type::external_traction)
-      return area_ratio_n.norm() * external_traction[f];
-    const auto& fn = *functions[condition.expression];
-    if (condition.type == Type::pressure)
-      return -fn.value(face.centre) * area_ratio_n;
-    Tensor<1, dim> t;
-    for (unsigned int d = 0; d < dim; ++d)
-      t[d] = fn.value(face.centre, d);
-    return area_ratio_n.norm() * t;
-  }
-
-  template <int dim>
-  void SolidSolver<dim>::update_boundary_values()
-  {
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    const Tensor<2, dim> G_P = cell_gradient(face.P);
+    const Tensor<1, dim> extrapolated = u[face.P] + face.k_P * G_P;
+    switch (condition.type)
     {
-      const auto& face = geometry.faces[f];
-      if (face.kind != FaceKind::boundary)
-        continue;
-      const auto& condition = face_condition[f];
-      const Tensor<2, dim> G_P = cell_gradient(face.P);
-      const Tensor<1, dim> extrapolated = u[face.P] + face.k_P * G_P;
-      switch (condition.type)
-      {
-      case Type::fixed_displacement:
-      {
-        const auto& fn = *functions[condition.expression];
-        for (unsigned int d = 0; d < dim; ++d)
-          boundary_u[f][d] = fn.value(face.centre, d);
-        break;
-      }
-      case Type::symmetry:
-        boundary_u[f] = extrapolated - (extrapolated * face.n) * face.n;
-        break;
-      default:
-      {
-        // Eq. 24: K g_n = t S'/S - n . q, with n . q = n.(Sigma.F^T) - K n . grad u at the
-        // previous iterate; then u_b from Eq. 23.
-        const Tensor<2, dim>& G_old = boundary_G[f];
-        const Tensor<1, dim> n_q = first_piola_traction(G_old, face.n, lame) - lame.K() * (face.n * G_old);
-        const Tensor<1, dim> g_n = (boundary_traction(f, G_old) - n_q) / lame.K();
-        Tensor<2, dim> T; // tangential part
-        if (parameters.variant == "present")
-          for (unsigned int j = 0; j < dim; ++j)
-          {
-            const Tensor<1, dim> t = tangential_gradient(face, vertex_u[j]);
-            for (unsigned int i = 0; i < dim; ++i)
-              T[i][j] = t[i];
-          }
-        else
-          T = G_P - outer_product(face.n, face.n * G_P);
-        boundary_G[f] = outer_product(face.n, g_n) + T;
-        boundary_u[f] = extrapolated + face.d_n * g_n;
-      }
-      }
+    case Type::fixed_displacement:
+    {
+      const auto& fn = *functions[condition.expression];
+      for (unsigned int d = 0; d < dim; ++d)
+        boundary_u[f][d] = fn.value(face.centre, d);
+      break;
     }
-    update_ghost_boundary_faces(geometry, boundary_u);
+    case Type::symmetry:
+      boundary_u[f] = extrapolated - (extrapolated * face.n) * face.n;
+      break;
+    default:
+    {
+      // Eq. 24: K g_n = t S'/S - n . q, with n . q = n.(Sigma.F^T) - K n . grad u at the
+      // previous iterate; then u_b from Eq. 23.
+      const Tensor<2, dim>& G_old = boundary_G[f];
+      const Tensor<1, dim> n_q =
+          first_piola_traction(G_old, face.n, lame) - lame.K() * (face.n * G_old);
+      const Tensor<1, dim> g_n = (boundary_traction(f, G_old) - n_q) / lame.K();
+      Tensor<2, dim> T; // tangential part
+      if (parameters.variant == "present")
+        for (unsigned int j = 0; j < dim; ++j)
+        {
+          const Tensor<1, dim> t = tangential_gradient(face, vertex_u[j]);
+          for (unsigned int i = 0; i < dim; ++i)
+            T[i][j] = t[i];
+        }
+      else
+        T = G_P - outer_product(face.n, face.n * G_P);
+      boundary_G[f] = outer_product(face.n, g_n) + T;
+      boundary_u[f] = extrapolated + face.d_n * g_n;
+    }
+    }
   }
+  update_ghost_boundary_faces(geometry, boundary_u);
+}
 
-  template <int dim>
-  void SolidSolver<dim>::update_gradients()
+template <int dim>
+void SolidSolver<dim>::update_gradients()
+{
+  // Boundary values (Eqs 23-24), vertex values and gradients depend on each other; a few sweeps
+  // make them (nearly) a function of u alone, so that the outer iteration is a fixed-point map
+  // of u that Anderson acceleration can model.
+  for (unsigned int sweep = 0; sweep < parameters.boundary_sweeps; ++sweep)
   {
     update_boundary_values();
     FaceVector boundary_values(geometry.faces.size());
@@ -258,266 +265,276 @@ namespace fvfsi
         gauss_green_gradient(geometry, vertex_u[j], grad_u[j]);
     }
   }
+}
 
-  template <int dim>
-  void SolidSolver<dim>::impose_vertex_constraints()
+template <int dim>
+void SolidSolver<dim>::impose_vertex_constraints()
+{
+  // The least-squares fit of App. B does not know that a symmetry plane forces u . n = 0 and a
+  // displacement boundary gives u exactly; a vertex on such a boundary takes that knowledge
+  // (otherwise the fit's O(h^2) error differs between the corner vertices and their
+  // neighbours, and the tangential gradient of Eq. 39 drops to first order there).
+  for (const auto& [v, n] : symmetry_vertex_normals)
   {
-    // The least-squares fit of App. B does not know that a symmetry plane forces u . n = 0 and a
-    // displacement boundary gives u exactly; a vertex on such a boundary takes that knowledge
-    // (otherwise the fit's O(h^2) error differs between the corner vertices and their
-    // neighbours, and the tangential gradient of Eq. 39 drops to first order there).
-    for (const auto& [v, n] : symmetry_vertex_normals)
-    {
-      double u_n = 0;
-      for (unsigned int j = 0; j < dim; ++j)
-        u_n += vertex_u[j][v] * n[j];
-      for (unsigned int j = 0; j < dim; ++j)
-        vertex_u[j][v] -= u_n * n[j];
-    }
-    for (const auto& [v, fn] : fixed_vertex_function)
-      for (unsigned int j = 0; j < dim; ++j)
-        vertex_u[j][v] = fn->value(geometry.vertices()[v], j);
+    double u_n = 0;
+    for (unsigned int j = 0; j < dim; ++j)
+      u_n += vertex_u[j][v] * n[j];
+    for (unsigned int j = 0; j < dim; ++j)
+      vertex_u[j][v] -= u_n * n[j];
   }
+  for (const auto& [v, fn] : fixed_vertex_function)
+    for (unsigned int j = 0; j < dim; ++j)
+      vertex_u[j][v] = fn->value(geometry.vertices()[v], j);
+}
 
-  template <int dim>
-  void SolidSolver<dim>::find_constrained_vertices()
-  {
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.N != invalid_cell)
-        continue;
-      for (const unsigned int v : face.vertices)
-        if (face_condition[f].type == Type::symmetry)
-        {
-          // Each distinct plane once (two planes meet at a corner: project on both).
-          bool known = false;
-          for (const auto& [w, n] : symmetry_vertex_normals)
-            known = known || (w == v && std::abs(n * face.n) > 1 - 1e-8);
-          if (!known)
-            symmetry_vertex_normals.emplace_back(v, face.n);
-        }
-        else if (face_condition[f].type == Type::fixed_displacement)
-          fixed_vertex_function[v] = functions[face_condition[f].expression].get();
-    }
-  }
-
-  template <int dim>
-  Tensor<1, dim> SolidSolver<dim>::face_force_density(const unsigned int f) const
+template <int dim>
+void SolidSolver<dim>::find_constrained_vertices()
+{
+  for (unsigned int f = 0; f < geometry.faces.size(); ++f)
   {
     const auto& face = geometry.faces[f];
     if (face.N != invalid_cell)
-    {
-      if (parameters.variant != "Jasak-Weller")
-        return first_piola_traction(face_gradient(f), face.n, lame);
-      // Jasak-Weller: K n.grad u_f (Eq. 19 with interpolated gradients) + n.q of the
-      // interpolated cell gradient, as solidDisplacementFoam's laplacian + div(sigmaExp).
-      const Tensor<2, dim> G_f = face_gradient(f);
-      const Tensor<2, dim> G_bar = face.w * cell_gradient(face.P) + (1 - face.w) * cell_gradient(face.N);
-      return lame.K() * (face.n * G_f) + first_piola_traction(G_bar, face.n, lame) -
-             lame.K() * (face.n * G_bar);
-    }
-    const auto type = face_condition[f].type;
-    if (takes_traction(type))
-      return boundary_traction(f, boundary_G[f]);
-    const Tensor<1, dim> t = first_piola_traction(face_gradient(f), face.n, lame);
-    return type == Type::symmetry ? (t * face.n) * face.n : t;
-  }
-
-  template <int dim>
-  void SolidSolver<dim>::compute_residual(std::array<CellVector, dim>& residual) const
-  {
-    // R_P = sum_f S_f n.(Sigma.F^T)_f + rho V (b - a(u)), the residual of Eq. 16.
-    for (auto& r : residual)
-      r = 0;
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.kind == FaceKind::ghost_boundary)
-        continue;
-      const Tensor<1, dim> force = face.area * face_force_density(f);
-      for (unsigned int j = 0; j < dim; ++j)
+      continue;
+    for (const unsigned int v : face.vertices)
+      if (face_condition[f].type == Type::symmetry)
       {
-        residual[j].local_element(face.P) += force[j];
-        if (face.kind == FaceKind::interior)
-          residual[j].local_element(face.N) -= force[j];
+        // Each distinct plane once (two planes meet at a corner: project on both).
+        bool known = false;
+        for (const auto& [w, n] : symmetry_vertex_normals)
+          known = known || (w == v && std::abs(n * face.n) > 1 - 1e-8);
+        if (!known)
+          symmetry_vertex_normals.emplace_back(v, face.n);
       }
-    }
-    const double dt = parameters.time_step;
-    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
-    {
-      const double rho_V = parameters.rho * geometry.cell_volume[c];
-      for (unsigned int j = 0; j < dim; ++j)
-      {
-        double acceleration = 0;
-        if (parameters.transient)
-        {
-          const double u_c = u.components[j].local_element(c), u1 = u_old.components[j].local_element(c),
-                       u2 = u_old2.components[j].local_element(c), v1 = v_old.components[j].local_element(c),
-                       v2 = v_old2.components[j].local_element(c);
-          acceleration = time_step_number == 1
-                           ? (u_c - u1) / (dt * dt) - v1 / dt                       // backward Euler
-                           : (9 * u_c - 12 * u1 + 3 * u2) / (4 * dt * dt) - (4 * v1 - v2) / (2 * dt); // Eqs 17-18
-        }
-        residual[j].local_element(c) += rho_V * (body_force.value(geometry.centroid[c], j) - acceleration);
-      }
-    }
+      else if (face_condition[f].type == Type::fixed_displacement)
+        fixed_vertex_function[v] = functions[face_condition[f].expression].get();
   }
+}
 
-  template <int dim>
-  void SolidSolver<dim>::shift_time_levels()
+template <int dim>
+Tensor<1, dim> SolidSolver<dim>::face_force_density(const unsigned int f) const
+{
+  const auto& face = geometry.faces[f];
+  if (face.N != invalid_cell)
   {
-    // v^[m-1] from the step just finished (BDF2 or, after the first step, backward Euler).
-    const double dt = parameters.time_step;
+    if (parameters.variant != "Jasak-Weller")
+      return first_piola_traction(face_gradient(f), face.n, lame);
+    // Jasak-Weller: K n.grad u_f (Eq. 19 with interpolated gradients) + n.q of the
+    // interpolated cell gradient, as solidDisplacementFoam's laplacian + div(sigmaExp).
+    const Tensor<2, dim> G_f = face_gradient(f);
+    const Tensor<2, dim> G_bar =
+        face.w * cell_gradient(face.P) + (1 - face.w) * cell_gradient(face.N);
+    return lame.K() * (face.n * G_f) + first_piola_traction(G_bar, face.n, lame) -
+           lame.K() * (face.n * G_bar);
+  }
+  const auto type = face_condition[f].type;
+  if (takes_traction(type))
+    return boundary_traction(f, boundary_G[f]);
+  const Tensor<1, dim> t = first_piola_traction(face_gradient(f), face.n, lame);
+  return type == Type::symmetry ? (t * face.n) * face.n : t;
+}
+
+template <int dim>
+void SolidSolver<dim>::compute_residual(std::array<CellVector, dim>& residual) const
+{
+  // R_P = sum_f S_f n.(Sigma.F^T)_f + rho V (b - a(u)), the residual of Eq. 16.
+  for (auto& r : residual)
+    r = 0;
+  for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+  {
+    const auto& face = geometry.faces[f];
+    if (face.kind == FaceKind::ghost_boundary)
+      continue;
+    const Tensor<1, dim> force = face.area * face_force_density(f);
     for (unsigned int j = 0; j < dim; ++j)
-      for (unsigned int c = 0; c < geometry.n_relevant_cells(); ++c)
-      {
-        const double u_c = u.components[j].local_element(c), u1 = u_old.components[j].local_element(c),
-                     u2 = u_old2.components[j].local_element(c);
-        const double v = time_step_number <= 1 ? (u_c - u1) / dt : (3 * u_c - 4 * u1 + u2) / (2 * dt);
-        v_old2.components[j].local_element(c) = v_old.components[j].local_element(c);
-        v_old.components[j].local_element(c) = v;
-        u_old2.components[j].local_element(c) = u1;
-        u_old.components[j].local_element(c) = u_c;
-      }
+    {
+      residual[j].local_element(face.P) += force[j];
+      if (face.kind == FaceKind::interior)
+        residual[j].local_element(face.N) -= force[j];
+    }
   }
-
-  template <int dim>
-  unsigned int SolidSolver<dim>::solve_time_step()
+  const double dt = parameters.time_step;
+  for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
   {
-    if (time_step_number > 0 && parameters.transient)
-      shift_time_levels();
-    ++time_step_number;
-    current_time += parameters.time_step;
-    body_force.set_time(current_time);
-    for (auto& fn : functions)
-      fn->set_time(current_time);
-    const double dt = parameters.time_step;
-    const double mass_coefficient =
+    const double rho_V = parameters.rho * geometry.cell_volume[c];
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      double acceleration = 0;
+      if (parameters.transient)
+      {
+        const double u_c = u.components[j].local_element(c),
+                     u1 = u_old.components[j].local_element(c),
+                     u2 = u_old2.components[j].local_element(c),
+                     v1 = v_old.components[j].local_element(c),
+                     v2 = v_old2.components[j].local_element(c);
+        acceleration = time_step_number == 1 ? (u_c - u1) / (dt * dt) - v1 / dt // backward Euler
+                                             : (9 * u_c - 12 * u1 + 3 * u2) / (4 * dt * dt) -
+                                                   (4 * v1 - v2) / (2 * dt); // Eqs 17-18
+      }
+      residual[j].local_element(c) +=
+          rho_V * (body_force.value(geometry.centroid[c], j) - acceleration);
+    }
+  }
+}
+
+template <int dim>
+void SolidSolver<dim>::shift_time_levels()
+{
+  // v^[m-1] from the step just finished (BDF2 or, after the first step, backward Euler).
+  const double dt = parameters.time_step;
+  for (unsigned int j = 0; j < dim; ++j)
+    for (unsigned int c = 0; c < geometry.n_relevant_cells(); ++c)
+    {
+      const double u_c = u.components[j].local_element(c),
+                   u1 = u_old.components[j].local_element(c),
+                   u2 = u_old2.components[j].local_element(c);
+      const double v = time_step_number <= 1 ? (u_c - u1) / dt : (3 * u_c - 4 * u1 + u2) / (2 * dt);
+      v_old2.components[j].local_element(c) = v_old.components[j].local_element(c);
+      v_old.components[j].local_element(c) = v;
+      u_old2.components[j].local_element(c) = u1;
+      u_old.components[j].local_element(c) = u_c;
+    }
+}
+
+template <int dim>
+unsigned int SolidSolver<dim>::solve_time_step()
+{
+  if (time_step_number > 0 && parameters.transient)
+    shift_time_levels();
+  ++time_step_number;
+  current_time += parameters.time_step;
+  body_force.set_time(current_time);
+  for (auto& fn : functions)
+    fn->set_time(current_time);
+  const double dt = parameters.time_step;
+  const double mass_coefficient =
       !parameters.transient ? 0 : (time_step_number == 1 ? 1 / (dt * dt) : 9 / (4 * dt * dt));
-    if (mass_coefficient != assembled_mass_coefficient)
-      assemble_matrices(mass_coefficient);
+  if (mass_coefficient != assembled_mass_coefficient)
+    assemble_matrices(mass_coefficient);
 
-    std::array<CellVector, dim> residual, du;
+  std::array<CellVector, dim> residual, du;
+  for (unsigned int j = 0; j < dim; ++j)
+  {
+    residual[j] = geometry.make_cell_vector();
+    du[j] = geometry.make_cell_vector();
+  }
+  // Outer iterations: the fixed point u = u + A^-1 R(u), accelerated by Anderson mixing.
+  const unsigned int n_owned = geometry.n_owned_cells();
+  std::vector<double> x(dim * n_owned), g(dim * n_owned);
+  if (acceleration)
+    acceleration->reset();
+  double change = 0;
+  for (unsigned int k = 1; k <= parameters.max_outer_iterations; ++k)
+  {
+    update_gradients();
+    compute_residual(residual);
+    double max_du = 0, max_u = 0;
     for (unsigned int j = 0; j < dim; ++j)
     {
-      residual[j] = geometry.make_cell_vector();
-      du[j] = geometry.make_cell_vector();
+      du[j] = 0;
+      linear_solver[j]->solve(matrix[j], du[j], residual[j],
+                              "solid displacement component " + std::to_string(j));
+      for (unsigned int c = 0; c < n_owned; ++c)
+      {
+        x[j * n_owned + c] = u.components[j].local_element(c);
+        g[j * n_owned + c] = x[j * n_owned + c] + du[j].local_element(c);
+        max_du = std::max(max_du, std::abs(du[j].local_element(c)));
+      }
     }
-    // Outer iterations: the fixed point u = u + A^-1 R(u), accelerated by Anderson mixing.
-    const unsigned int n_owned = geometry.n_owned_cells();
-    std::vector<double> x(dim * n_owned), g(dim * n_owned);
     if (acceleration)
-      acceleration->reset();
-    double change = 0;
-    for (unsigned int k = 1; k <= parameters.max_outer_iterations; ++k)
+      acceleration->step(x, g);
+    for (unsigned int j = 0; j < dim; ++j)
+      for (unsigned int c = 0; c < n_owned; ++c)
+      {
+        u.components[j].local_element(c) = g[j * n_owned + c];
+        max_u = std::max(max_u, std::abs(g[j * n_owned + c]));
+      }
+    u.update_ghost_values();
+    max_du = Utilities::MPI::max(max_du, geometry.comm());
+    max_u = Utilities::MPI::max(max_u, geometry.comm());
+    change = max_du / std::max(max_u, 1e-300);
+    if (k % 500 == 0)
+      pcout << "fvfsi: solid time step " << time_step_number << ", outer iteration " << k
+            << ": relative change " << change << " (tolerance " << parameters.outer_tolerance
+            << ")\n";
+    if (!std::isfinite(max_u) || !std::isfinite(max_du))
+      throw std::runtime_error(
+          "Solid: displacement is not finite at time step " + std::to_string(time_step_number) +
+          " (t = " + std::to_string(current_time) + " s), outer iteration " + std::to_string(k));
+    if (change < parameters.outer_tolerance || max_u == 0)
     {
       update_gradients();
-      compute_residual(residual);
-      double max_du = 0, max_u = 0;
-      for (unsigned int j = 0; j < dim; ++j)
-      {
-        du[j] = 0;
-        linear_solver[j]->solve(matrix[j], du[j], residual[j], "solid displacement component " + std::to_string(j));
-        for (unsigned int c = 0; c < n_owned; ++c)
-        {
-          x[j * n_owned + c] = u.components[j].local_element(c);
-          g[j * n_owned + c] = x[j * n_owned + c] + du[j].local_element(c);
-          max_du = std::max(max_du, std::abs(du[j].local_element(c)));
-        }
-      }
-      if (acceleration)
-        acceleration->step(x, g);
-      for (unsigned int j = 0; j < dim; ++j)
-        for (unsigned int c = 0; c < n_owned; ++c)
-        {
-          u.components[j].local_element(c) = g[j * n_owned + c];
-          max_u = std::max(max_u, std::abs(g[j * n_owned + c]));
-        }
-      u.update_ghost_values();
-      max_du = Utilities::MPI::max(max_du, geometry.comm());
-      max_u = Utilities::MPI::max(max_u, geometry.comm());
-      change = max_du / std::max(max_u, 1e-300);
-      if (k % 500 == 0)
-        pcout << "fvfsi: solid time step " << time_step_number << ", outer iteration " << k
-              << ": relative change " << change << " (tolerance " << parameters.outer_tolerance << ")\n";
-      if (!std::isfinite(max_u) || !std::isfinite(max_du))
-        throw std::runtime_error("Solid: displacement is not finite at time step " +
-                                 std::to_string(time_step_number) + " (t = " + std::to_string(current_time) +
-                                 " s), outer iteration " + std::to_string(k));
-      if (change < parameters.outer_tolerance || max_u == 0)
-      {
-        update_gradients();
-        return k;
-      }
+      return k;
     }
-    throw std::runtime_error("Solid: outer iterations did not converge at time step " +
-                             std::to_string(time_step_number) + " (t = " + std::to_string(current_time) +
-                             " s): relative change " + std::to_string(change) + " after " +
-                             std::to_string(parameters.max_outer_iterations) +
-                             " iterations (raise Solid/Max outer iterations, or reduce the load or time step)");
   }
+  throw std::runtime_error(
+      "Solid: outer iterations did not converge at time step " + std::to_string(time_step_number) +
+      " (t = " + std::to_string(current_time) + " s): relative change " + std::to_string(change) +
+      " after " + std::to_string(parameters.max_outer_iterations) +
+      " iterations (raise Solid/Max outer iterations, or reduce the load or time step)");
+}
 
-  template <int dim>
-  Tensor<2, dim> SolidSolver<dim>::cell_stress(const unsigned int c) const
-  {
-    return cauchy_stress(cell_gradient(c), lame);
-  }
+template <int dim>
+Tensor<2, dim> SolidSolver<dim>::cell_stress(const unsigned int c) const
+{
+  return cauchy_stress(cell_gradient(c), lame);
+}
 
-  template <int dim>
-  Tensor<2, dim> SolidSolver<dim>::face_stress(const unsigned int f) const
-  {
-    return cauchy_stress(face_gradient(f), lame);
-  }
+template <int dim>
+Tensor<2, dim> SolidSolver<dim>::face_stress(const unsigned int f) const
+{
+  return cauchy_stress(face_gradient(f), lame);
+}
 
-  template <int dim>
-  Tensor<1, dim> SolidSolver<dim>::patch_force(const unsigned int patch) const
-  {
-    Tensor<1, dim> force;
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-      if (geometry.faces[f].kind == FaceKind::boundary && geometry.faces[f].patch == patch)
-        force += geometry.faces[f].area * face_force_density(f);
-    return Utilities::MPI::sum(force, geometry.comm());
-  }
+template <int dim>
+Tensor<1, dim> SolidSolver<dim>::patch_force(const unsigned int patch) const
+{
+  Tensor<1, dim> force;
+  for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    if (geometry.faces[f].kind == FaceKind::boundary && geometry.faces[f].patch == patch)
+      force += geometry.faces[f].area * face_force_density(f);
+  return Utilities::MPI::sum(force, geometry.comm());
+}
 
-  template <int dim>
-  Tensor<1, dim> SolidSolver<dim>::point_displacement(const Point<dim>& x) const
+template <int dim>
+Tensor<1, dim> SolidSolver<dim>::point_displacement(const Point<dim>& x) const
+{
+  // The rank that owns the cell holding x (found with a tolerance, so points on the boundary
+  // count) evaluates the linear reconstruction u_P + (x - r_P) . grad u_P.
+  Tensor<1, dim> value;
+  double found = 0;
+  try
   {
-    // The rank that owns the cell holding x (found with a tolerance, so points on the boundary
-    // count) evaluates the linear reconstruction u_P + (x - r_P) . grad u_P.
-    Tensor<1, dim> value;
-    double found = 0;
-    try
-    {
-      const auto cell_and_point = GridTools::find_active_cell_around_point(
+    const auto cell_and_point = GridTools::find_active_cell_around_point(
         StaticMappingQ1<dim>::mapping, geometry.triangulation(), x, std::vector<bool>(), 1e-10);
-      if (cell_and_point.first.state() == IteratorState::valid && cell_and_point.first->is_locally_owned())
-      {
-        const auto c = geometry.partitioner()->global_to_local(
-          typename DoFHandler<dim>::active_cell_iterator(&geometry.triangulation(), cell_and_point.first->level(),
-                                                          cell_and_point.first->index(), &geometry.dof_handler())
-            ->dof_index(0));
-        value = u[c] + (x - geometry.centroid[c]) * cell_gradient(c);
-        found = 1;
-      }
-    }
-    catch (const std::exception&)
+    if (cell_and_point.first.state() == IteratorState::valid &&
+        cell_and_point.first->is_locally_owned())
     {
-      // not in this rank's part of the mesh
+      const auto c = geometry.partitioner()->global_to_local(
+          typename DoFHandler<dim>::active_cell_iterator(
+              &geometry.triangulation(), cell_and_point.first->level(),
+              cell_and_point.first->index(), &geometry.dof_handler())
+              ->dof_index(0));
+      value = u[c] + (x - geometry.centroid[c]) * cell_gradient(c);
+      found = 1;
     }
-    const double n_found = Utilities::MPI::sum(found, geometry.comm());
-    if (n_found == 0)
-      throw std::runtime_error("Solid: probe point " + Utilities::to_string(x[0]) + ", " +
-                               Utilities::to_string(x[1]) + " lies outside the mesh");
-    return Utilities::MPI::sum(value, geometry.comm()) / n_found;
   }
-
-  template <int dim>
-  void SolidSolver<dim>::set_external_traction(const std::vector<Tensor<1, dim>>& traction)
+  catch (const std::exception&)
   {
-    external_traction = traction;
+    // not in this rank's part of the mesh
   }
+  const double n_found = Utilities::MPI::sum(found, geometry.comm());
+  if (n_found == 0)
+    throw std::runtime_error("Solid: probe point " + Utilities::to_string(x[0]) + ", " +
+                             Utilities::to_string(x[1]) + " lies outside the mesh");
+  return Utilities::MPI::sum(value, geometry.comm()) / n_found;
+}
 
-  template class SolidSolver<2>;
-  template class SolidSolver<3>;
+template <int dim>
+void SolidSolver<dim>::set_external_traction(const std::vector<Tensor<1, dim>>& traction)
+{
+  external_traction = traction;
+}
+
+template class SolidSolver<2>;
+template class SolidSolver<3>;
 } // namespace fvfsi

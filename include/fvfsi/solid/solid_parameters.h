@@ -44,7 +44,9 @@ namespace fvfsi
     double outer_tolerance = 1e-6;
     unsigned int max_outer_iterations = 1000;
     /// Anderson acceleration of the outer iterations: number of kept differences (0: none).
-    unsigned int acceleration_depth = 5;
+    unsigned int acceleration_depth = 10;
+    /// Passes of boundary values + vertex values + gradients per outer iteration.
+    unsigned int boundary_sweeps = 8;
 
     std::string fixed_displacement, traction, pressure, symmetry, external_traction;
     LinearSolverParameters solver;
