@@ -14,16 +14,21 @@
 //  - structure: owned cells have 2 dim faces; every face's kind matches its P and N; its vertices
 //    are those of the deal.II face; S_f = area n_f with |n_f| = 1; d_fn > 0 on every face; in 2D
 //    r_f is the segment midpoint and n_f is normal to the segment;
+//  - ghost cells' centroids and volumes, computed on this rank, are bitwise their owner's;
+//  - FVGeometry::reinit() after moving the vertices of the distorted box by x -> A x + t (the
+//    triangulation untouched, as in a moving-mesh run) gives V_P -> det A V_P and r_P -> A r_P + t
+//    (the decomposition about vertex averages is affine-covariant) and passes all checks above;
 //  - face counting: faces with counted_here, summed over the ranks, number the distinct faces of
 //    the mesh, (n_cells * 2 dim + n_boundary_faces) / 2, and every processor face is counted on
 //    exactly one of its two ranks.
 //
-// Tolerances: all quantities are sums of O(10^3) terms of O(1) size relative to the scale they
-// are compared against, computed in double precision; the measured errors are 1e-16 .. 1e-14
-// (FVFSI_TEST_VERBOSE=1 prints them). Checks use 1e-12 relative to the natural scale (the domain
-// measure, measure x largest coordinate, sum_f |S_f|, V_P, the face area, h), i.e. a margin of
-// >= 100 over round-off, yet far below any discretisation-size error (which would be O(h) ~ 0.1).
-// The global sums are reduced over ranks in an unspecified order, so only the verdicts are printed.
+// Tolerances: the identities are exact in exact arithmetic; in double precision they hold to
+// round-off of per-cell sums of a few terms or global sums of O(10^3) terms. The measured errors
+// are <= 2e-14 (FVFSI_TEST_VERBOSE=1 prints them), relative to the natural scale (the domain
+// measure, measure x largest coordinate, sum_f |S_f|, V_P, the face area or diameter). Checks use
+// 1e-12 on the same scale: a margin of >= 50 over round-off, yet ten orders below any
+// discretisation-size error (O(h) ~ 0.1). Global sums are reduced over ranks in an unspecified
+// order, so only the verdicts are printed.
 
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_tools.h>
@@ -93,6 +98,30 @@ void check_geometry(std::ostream& out, const parallel::distributed::Triangulatio
   check(out, "every owned cell is closed: sum_f S_f = 0", closed_error, 1e-12);
   if (planar)
     check(out, "sum_f r_f (x) S_f = V_P I on every owned cell", second_moment_error, 1e-12);
+
+  // Ghost cells: their geometry, computed on this rank, has the same bits as their owner's (a
+  // parallel run must not depend on who computes what).
+  {
+    std::array<fvfsi::CellVector, dim + 1> data;
+    for (auto& v : data)
+      v = fv.make_cell_vector();
+    for (unsigned int c = 0; c < n_owned; ++c)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        data[d].local_element(c) = fv.centroid[c][d];
+      data[dim].local_element(c) = fv.cell_volume[c];
+    }
+    bool same = true;
+    for (auto& v : data)
+      v.update_ghost_values();
+    for (unsigned int c = n_owned; c < fv.n_relevant_cells(); ++c)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        same = same && data[d].local_element(c) == fv.centroid[c][d];
+      same = same && data[dim].local_element(c) == fv.cell_volume[c];
+    }
+    check(out, "ghost cells' r_P and V_P are bitwise their owner's", same);
+  }
 
   // Ghost cells list only their boundary faces.
   bool ghost_faces_ok = true;
@@ -183,6 +212,9 @@ void check_geometry(std::ostream& out, const parallel::distributed::Triangulatio
   check(out, "faces counted_here (summed over ranks) = distinct faces", counted == expected);
   check(out, "boundary-kind faces (summed over ranks) = boundary faces",
         Utilities::MPI::sum(n_boundary_kind, MPI_COMM_WORLD) == n_boundary_faces);
+  if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    check(out, "parallel: there are processor faces (the checks above are not vacuous)",
+          Utilities::MPI::sum(n_processor, MPI_COMM_WORLD) > 0);
   check(out, "every processor face is counted on exactly one of its two ranks",
         2 * Utilities::MPI::sum(n_processor_counted, MPI_COMM_WORLD) ==
           Utilities::MPI::sum(n_processor, MPI_COMM_WORLD));
@@ -239,6 +271,37 @@ void test_distorted_box(std::ostream& out)
   if (dim == 3)
     centre[dim - 1] = 0.75;
   check_geometry(out, tria, fv, measure, measure * centre, 2.0, dim == 2);
+
+  // FVGeometry::reinit() with the vertices moved by x -> A x + t (a mesh motion that keeps the
+  // triangulation): the triangle decomposition about vertex averages is affine-covariant, so
+  // V_P -> det A V_P and r_P -> A r_P + t exactly (owned and ghost cells).
+  Tensor<2, dim> A;
+  Tensor<1, dim> t;
+  const double A3[3][3] = {{0.9, 0.2, 0.1}, {-0.3, 1.1, 0.05}, {0.15, -0.1, 1.2}};
+  for (unsigned int i = 0; i < dim; ++i)
+  {
+    t[i] = 0.1 * (i + 1);
+    for (unsigned int j = 0; j < dim; ++j)
+      A[i][j] = A3[i][j];
+  }
+  out << "--- the same mesh, FVGeometry::reinit() with the vertices moved by x -> A x + t" << std::endl;
+  fvfsi::FVGeometry<dim> moved(tria);
+  std::vector<Point<dim>> x = fv.vertices();
+  for (auto& p : x)
+    p = Point<dim>(A * p + t);
+  moved.reinit(x);
+  double volume_error = 0, centroid_error = 0;
+  for (unsigned int c = 0; c < fv.n_relevant_cells(); ++c)
+  {
+    volume_error = std::max(volume_error, std::abs(moved.cell_volume[c] - determinant(A) * fv.cell_volume[c]) /
+                                            moved.cell_volume[c]);
+    centroid_error = std::max(centroid_error, (moved.centroid[c] - (A * fv.centroid[c] + t)).norm() /
+                                                std::pow(fv.cell_volume[c], 1.0 / dim));
+  }
+  check(out, "reinit(A x + t): V_P -> det A V_P", volume_error, 1e-12);
+  check(out, "reinit(A x + t): r_P -> A r_P + t", centroid_error, 1e-12);
+  check_geometry(out, tria, moved, determinant(A) * measure, determinant(A) * measure * (A * centre + t), 3.0,
+                 dim == 2);
 }
 
 template <int dim>
