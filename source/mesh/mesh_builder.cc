@@ -122,7 +122,8 @@ namespace fvfsi
           of_owned_cell[cell->vertex_index(v)] = true;
     }
     // Only vertices of owned cells see all their edges (the ghost layer holds every cell that
-    // shares a vertex with an owned cell); their new positions are then sent to the ghost copies.
+    // shares a vertex with an owned cell); their new positions are then copied to the ghost copies
+    // of the cells by their owners (communicate_locally_moved_vertices would need vertex owners).
     std::vector<bool> moved(n, false);
     for (const auto& cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -134,7 +135,20 @@ namespace fvfsi
           cell->vertex(v) += factor * min_edge[i] * hashed_direction(cell->vertex(v), seed);
           moved[i] = true;
         }
-    tria.communicate_locally_moved_vertices(moved);
+    using Corners = std::array<Point<dim>, GeometryInfo<dim>::vertices_per_cell>;
+    using Cell = typename parallel::distributed::Triangulation<dim>::active_cell_iterator;
+    GridTools::exchange_cell_data_to_ghosts<Corners, parallel::distributed::Triangulation<dim>>(
+      tria,
+      [](const Cell& cell) {
+        Corners x;
+        for (const unsigned int v : cell->vertex_indices())
+          x[v] = cell->vertex(v);
+        return std_cxx17::optional<Corners>(x);
+      },
+      [](const Cell& cell, const Corners& x) {
+        for (const unsigned int v : cell->vertex_indices())
+          cell->vertex(v) = x[v];
+      });
   }
 
   template <int dim>
