@@ -75,6 +75,13 @@ namespace fvfsi
         scene.run();
         scene.write_summary(summary);
       }
+      else if (p.run.scene == "fluid")
+      {
+        FluidScene<dim> scene(p.mesh, p.fluid, p.fluid_scene, MPI_COMM_WORLD, prm_directory,
+                              p.run.output_directory);
+        scene.run();
+        scene.write_summary(summary);
+      }
       (void)out;
     }
   } // namespace
@@ -84,9 +91,9 @@ namespace fvfsi
     prm.add_parameter("Dimension", dim, "Space dimension of the scene: 2 (true 2D) or 3.",
                       Patterns::Integer(2, 3));
     prm.add_parameter("Scene", scene,
-                      "What to run: poisson (the FV core verification problem) or solid (the solid "
-                      "solver alone).",
-                      Patterns::Selection("poisson|solid"));
+                      "What to run: poisson (the FV core verification problem), solid (the solid "
+                      "solver alone) or fluid (the flow solver alone, on a fixed mesh).",
+                      Patterns::Selection("poisson|solid|fluid"));
     prm.add_parameter("Output directory", output_directory,
                       "Directory for VTU/PVTU/PVD files, tables and summary.json (created if needed).");
   }
@@ -101,6 +108,8 @@ namespace fvfsi
     poisson.declare(prm);
     solid.declare(prm);
     solid_scene.declare(prm);
+    fluid.declare(prm);
+    fluid_scene.declare(prm);
   }
 
   void read_parameters(AllParameters& parameters, const std::string& file,

@@ -90,9 +90,12 @@ namespace fvfsi
     }
     catch (const std::exception& e)
     {
+      // The solver's own message is a page of deal.II text; the numbers say it all.
+      (void)e;
       throw std::runtime_error("linear solve of " + what + " failed after " +
                                std::to_string(control.last_step()) + " iterations (residual " +
-                               std::to_string(control.last_value()) + "): " + e.what());
+                               Utilities::to_string(control.last_value()) + ", target " +
+                               Utilities::to_string(control.tolerance()) + ")");
     }
     for (unsigned int i = 0; i < n; ++i)
       x.local_element(i) = x_trilinos.trilinos_vector()[0][i];

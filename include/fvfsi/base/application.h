@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <fvfsi/apps/fluid_scene.h>
 #include <fvfsi/apps/poisson.h>
 #include <fvfsi/apps/solid_scene.h>
 #include <fvfsi/mesh/mesh_parameters.h>
@@ -31,6 +32,8 @@ namespace fvfsi
     PoissonParameters poisson;
     SolidParameters solid;
     SolidSceneParameters solid_scene;
+    FluidParameters fluid;
+    FluidSceneParameters fluid_scene;
     dealii::ParameterHandler prm;
   };
 

@@ -1,0 +1,91 @@
+#pragma once
+// The fluid scene: a FluidSolver on a mesh from the .prm, run steady or to its end time, with the
+// force on chosen patches (drag and lift) as a time history, VTU output, errors against an exact
+// solution when the .prm gives one, and for periodic flows the mean, amplitude and frequency of
+// the forces over the last periods.
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/distributed/tria.h>
+
+#include <fvfsi/fluid/fluid_parameters.h>
+#include <fvfsi/fluid/fluid_solver.h>
+#include <fvfsi/io/summary.h>
+#include <fvfsi/mesh/fv_geometry.h>
+#include <fvfsi/mesh/mesh_parameters.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fvfsi
+{
+  struct FluidSceneParameters
+  {
+    /// Patches whose summed force is the body force (drag = x, lift = y), comma separated.
+    std::vector<std::string> force_patches;
+    /// Exact velocity (dim expressions of x, y[, z], t) and pressure [Pa]; empty: no errors.
+    std::string exact_velocity = "", exact_pressure = "";
+    /// Periodic flows: the mean, amplitude and frequency of the forces are taken over the
+    /// samples with t >= End time - this [s] (0: none).
+    double analysis_window = 0;
+    /// Write VTU every this many time steps (0: only the final state).
+    unsigned int output_interval = 0;
+    /// Print a progress line every this many time steps.
+    unsigned int progress_interval = 100;
+
+    void declare(dealii::ParameterHandler& prm);
+  };
+
+  /// Mean = (max + min) / 2, amplitude = (max - min) / 2 and frequency (from the mean
+  /// up-crossings) of a sampled periodic signal, as Turek and Hron define them.
+  struct PeriodicStatistics
+  {
+    double mean = 0, amplitude = 0, frequency = 0;
+  };
+  PeriodicStatistics periodic_statistics(const std::vector<double>& t, const std::vector<double>& q);
+
+  /// What a fluid run found.
+  struct FluidResults
+  {
+    double max_velocity_error = -1, max_pressure_error = -1; ///< max over cells [m/s], [Pa]
+    double l2_velocity_error = -1, l2_pressure_error = -1;   ///< sqrt(sum_P V_P e_P^2)
+    unsigned int n_time_steps = 0; ///< time steps, or pseudo time steps of a steady run
+  };
+
+  template <int dim>
+  class FluidScene
+  {
+  public:
+    FluidScene(const MeshParameters& mesh_parameters, const FluidParameters& fluid_parameters,
+               const FluidSceneParameters& scene_parameters, MPI_Comm comm,
+               const std::string& prm_directory, const std::string& output_directory);
+
+    void run();
+    void write_summary(Summary& summary) const;
+    const FVGeometry<dim>& geometry() const { return *fv; }
+    const FluidSolver<dim>& solver() const { return *fluid; }
+    const FluidResults& results() const { return result; }
+    /// Force of the fluid on the force patches [N] (per unit depth in 2D).
+    dealii::Tensor<1, dim> body_force() const;
+
+  private:
+    void make_grid();
+    void record_time_history();
+    void compute_errors();
+    void output_results() const;
+
+    MPI_Comm comm;
+    MeshParameters mesh_parameters;
+    FluidParameters fluid_parameters;
+    FluidSceneParameters scene_parameters;
+    std::string prm_directory, output_directory;
+    dealii::ConditionalOStream pcout;
+    dealii::parallel::distributed::Triangulation<dim> triangulation;
+    std::unique_ptr<FVGeometry<dim>> fv;
+    std::unique_ptr<FluidSolver<dim>> fluid;
+
+    std::vector<double> history_t, history_drag, history_lift;
+    FluidResults result;
+  };
+} // namespace fvfsi

@@ -1,0 +1,57 @@
+#pragma once
+// The `subsection Fluid` of a .prm file: fluid properties, time integration, the PISO algorithm,
+// the convection scheme and the boundary conditions of the incompressible flow solver.
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <fvfsi/fv/linear_solver.h>
+
+#include <string>
+#include <vector>
+
+namespace fvfsi
+{
+  /// One fluid boundary condition: a patch, its type and its value expression(s).
+  struct FluidBoundaryCondition
+  {
+    enum class Type
+    {
+      velocity_inlet, ///< u given (vector expression of x, y[, z], t) [m/s]; zero-gradient p
+      wall,           ///< no slip: u = mesh velocity (zero on a fixed mesh); zero-gradient p
+      outlet,         ///< p given (scalar expression) [Pa]; zero-gradient u
+      symmetry        ///< u . n = 0, no shear; zero-gradient p
+    };
+    std::string patch;
+    Type type = Type::wall;
+    std::string expression;
+  };
+
+  struct FluidParameters
+  {
+    double rho = 1000; ///< density [kg/m^3]
+    double nu = 1e-3;  ///< kinematic viscosity [m^2/s]
+    std::string body_force = "0; 0";       ///< g [m/s^2], vector expression of x, y[, z], t
+    std::string initial_velocity = "0; 0"; ///< u(x, t = 0) [m/s]
+
+    bool transient = true;    ///< false: steady (relaxed pseudo time steps to convergence)
+    double time_step = 1e-3;  ///< dt [s] (transient)
+    double end_time = 1;      ///< [s]
+    double momentum_relaxation = 0.9;         ///< steady: alpha, the local pseudo time step
+    double steady_tolerance = 1e-8;           ///< steady: stop when the relative change is below
+    unsigned int max_steady_iterations = 5000; ///< steady: pseudo time step limit
+
+    unsigned int outer_correctors = 1;       ///< PIMPLE outer loops per time step (1 = PISO)
+    unsigned int pressure_correctors = 2;    ///< PISO pressure correctors per outer loop
+    unsigned int non_orthogonal_correctors = 2; ///< extra pressure solves for Eq. 19's correction
+    bool momentum_predictor = true;
+    std::string convection = "linear upwind"; ///< upwind | linear upwind | central
+
+    std::string velocity_inlet, outlet, wall, symmetry;
+
+    LinearSolverParameters momentum_solver, pressure_solver;
+
+    void declare(dealii::ParameterHandler& prm);
+    /// The boundary conditions listed in the four entries; throws naming a malformed entry.
+    std::vector<FluidBoundaryCondition> boundary_conditions() const;
+  };
+} // namespace fvfsi

@@ -1,0 +1,179 @@
+#pragma once
+// The incompressible flow solver (paper sections 2.1 and 3.2): velocity u and kinematic pressure
+// p/rho collocated at the cell centres, momentum solved component by component, pressure from
+// continuity by the PISO algorithm with a consistent Rhie-Chow face flux.
+//
+// Momentum of cell P (Eq. 2 integrated over V_P, BDF2 in time, Eqs 17-18 style):
+//
+//   V_P (c0 u_P - c1 u_P^o + c2 u_P^oo) + sum_f phi_f u_f - sum_f nu S_f (n.grad u)_f
+//       = V_P g - V_P (grad p)_P,
+//
+// with phi_f = F_f - F_f^mesh the flux relative to the moving face (F_f = S_f . u_f, volumetric,
+// m^3/s, m^2/s per unit depth in 2D), u_f by the convection scheme (upwind part implicit, the
+// rest deferred), n.grad u by Eq. 19 (orthogonal part implicit). Written as
+//
+//   A_P u_P + sum_N A_PN u_N = B_P - V_P (grad p)_P,   B_P = B_P^time + B_P^rest,
+//
+// with B^time = V (c1 u^o - c2 u^oo) and B^rest every other explicit source. Dividing by V_P
+// (a_P = A_P / V_P, h_P = (B^rest_P - sum_N A_PN u_N) / V_P) gives
+//   u_P = (h_P + B^time_P / V_P - (grad p)_P) / a_P.
+//
+// Consistent Rhie-Chow flux (after Tukovic and Jasak; the paper's refs [20, 21]). Split
+// a_P = c0 + a*_P into its time part c0 (the same in every cell) and its spatial part a*_P. At a
+// steady state the cell equation is a*_P u_P = h_P - (grad p)_P, whatever the time step. The face
+// flux is built to have the same property:
+//
+//   (c0 + a*_f) F_f = c1 F_f^o - c2 F_f^oo + a*_f [ S_f . (h / a*)_f - (1 / a*)_f S_f (n.grad p)_f ],
+//
+// with (h / a*)_f interpolated linearly and corrected for skewness with the velocity gradient
+// (h / a* ~ u + grad p / a*, and the interpolation point on the line P-N misses the face centre by
+// m_f on a distorted mesh), 1 / a*_f interpolated linearly, and (n.grad p)_f by Eq. 19. At a steady
+// state (F = F^o = F^oo, c0 = c1 - c2) the time terms cancel exactly: the converged solution does
+// not depend on the (pseudo) time step. Interpolating h / a* (a velocity) rather than h keeps the
+// flux second order on meshes whose cell coefficients a*_P jump from cell to cell. Continuity
+// sum_f F_f = 0 is the pressure equation, a Laplacian with Gamma_f = 1 / (c0 + a*_f).
+//
+// The solver knows nothing about coupling or mesh motion drivers: it reads the geometry it is
+// given and exposes velocity, pressure, fluxes and patch forces.
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <fvfsi/fluid/fluid_parameters.h>
+#include <fvfsi/fv/boundary_conditions.h>
+#include <fvfsi/fv/cell_gradient.h>
+#include <fvfsi/fv/face_matrix.h>
+#include <fvfsi/fv/laplacian.h>
+#include <fvfsi/fv/linear_solver.h>
+#include <fvfsi/fv/vertex_interpolation.h>
+#include <fvfsi/mesh/fv_geometry.h>
+#include <fvfsi/mesh/mesh_parameters.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace fvfsi
+{
+  template <int dim>
+  class FluidSolver
+  {
+  public:
+    FluidSolver(const FVGeometry<dim>& geometry, const MeshParameters& mesh_parameters,
+                const FluidParameters& parameters);
+
+    /// Advance by one time step (steady: one pseudo time step). Returns the relative change
+    /// dt max|du/dt| / max|u| of the step. Throws std::runtime_error naming the time step and
+    /// the field if a value becomes non-finite.
+    double solve_time_step();
+
+    /// Steady: pseudo time steps until the relative change is below the steady tolerance.
+    /// Returns the number of pseudo steps.
+    unsigned int solve_steady();
+
+    double time() const { return current_time; }
+    unsigned int step() const { return time_step_number; }
+    const FluidParameters& parameters() const { return prm; }
+
+    /// u at the cell centres [m/s] (ghosts up to date).
+    const CellVectorField<dim>& velocity() const { return u; }
+    /// Kinematic pressure p / rho at the cell centres [m^2/s^2] (ghosts up to date).
+    const CellVector& kinematic_pressure() const { return p; }
+    /// grad u_j at the cell centres (vertex Gauss-Green, Eq. 37).
+    const CellGradient<dim>& velocity_gradient(unsigned int j) const { return grad_u[j]; }
+    /// Volumetric face fluxes F_f = S_f . u_f [m^3/s] (per unit depth in 2D), indexed like
+    /// FVGeometry::faces.
+    const FaceVector& face_flux() const { return F; }
+    /// Force of the fluid on the body behind a wall patch, sum over its faces of
+    /// S_f (p_f n_f - mu (n.grad u)_f) [N] (per unit depth in 2D), n_f out of the fluid.
+    dealii::Tensor<1, dim> patch_force(unsigned int patch) const;
+    /// True if an outlet fixes the pressure level; otherwise p = 0 in global cell 0.
+    bool pressure_level_is_fixed() const { return pressure_level_fixed; }
+    /// max over owned cells of |div u| V_P / (sum_f |F_f|): the continuity error.
+    double continuity_error() const;
+    /// max over cells of the Courant number dt sum_f |phi_f| / (2 V_P).
+    double courant_number() const;
+    /// Wall time per part of the algorithm, for the run's log.
+    dealii::TimerOutput& timer() { return timer_output; }
+
+  private:
+    using Type = FluidBoundaryCondition::Type;
+    struct FaceCondition
+    {
+      Type type = Type::wall;
+      int expression = -1; ///< index into `functions`, -1 for none
+    };
+
+    void setup_boundary_conditions(const MeshParameters& mesh_parameters);
+    void set_initial_conditions();
+    /// Transient: du/dt ~ c0 u - c1 u^o + c2 u^oo, the same in every cell.
+    void time_coefficients(double& c0, double& c1, double& c2) const;
+
+    // Boundary values, vertex values and gradients of u and p.
+    void update_velocity_boundary_values();
+    void update_velocity_gradients();
+    void update_pressure_boundary_values();
+    void update_pressure_gradient();
+
+    // The steps of one PISO time step.
+    void solve_outer_iteration();
+    void assemble_momentum();
+    void add_convection_correction(unsigned int f, double phi);
+    void solve_momentum();
+    void assemble_pressure_matrix();
+    void compute_predicted_fluxes();
+    void solve_pressure();
+    void correct_fluxes();
+    void correct_velocity();
+    void shift_time_levels();
+    void check_finite(const char* field) const;
+
+    const FVGeometry<dim>& geometry;
+    FluidParameters prm;
+    dealii::ConditionalOStream pcout;
+    dealii::TimerOutput timer_output;
+    VertexInterpolation<dim> vertex_interpolation;
+    Laplacian<dim> laplacian;
+
+    std::vector<FaceCondition> face_condition; ///< per boundary face
+    std::vector<std::unique_ptr<dealii::FunctionParser<dim>>> functions;
+    dealii::FunctionParser<dim> body_force;
+    bool pressure_level_fixed = false; ///< true if some outlet fixes p; else a reference cell
+    ScalarBoundaryConditions<dim> velocity_bc, pressure_bc;
+    FaceVector nu_f; ///< nu per face (Gamma of the viscous Laplacian)
+
+    // Matrices and linear solvers.
+    FaceMatrix<dim> momentum, pressure_equation;
+    dealii::TrilinosWrappers::SparseMatrix momentum_matrix, pressure_matrix;
+    LinearSolver momentum_solver, pressure_solver;
+
+    // State.
+    CellVectorField<dim> u, u_old, u_old2;
+    CellVector p;
+    FaceVector F, F_old, F_old2, F_mesh;
+    double current_time = 0;
+    unsigned int time_step_number = 0;
+
+    // Derived from u and p.
+    std::array<CellGradient<dim>, dim> grad_u;
+    CellGradient<dim> grad_p;
+    std::array<std::vector<double>, dim> vertex_u;
+    std::vector<double> vertex_p;
+    std::vector<dealii::Tensor<1, dim>> boundary_u; ///< u_b per boundary face
+    FaceVector boundary_p;                          ///< p_b per boundary face
+
+    // Momentum equation of the current time step (owned cells).
+    std::array<std::vector<double>, dim> B_time; ///< V (c1 u^o - c2 u^oo)
+    std::array<CellVector, dim> B_rest;          ///< every other explicit source
+    CellVector a;                  ///< a_P = A_P / V_P [1/s], ghosted
+    CellVector a_star;             ///< a*_P = a_P - c0, the spatial part [1/s], ghosted
+    CellVectorField<dim> h;        ///< h_P [m/s^2], ghosted
+    FaceVector a_star_f;           ///< a*_f = 1 / (1 / a*)_f
+    std::vector<double> c0_cell;   ///< c0 of each owned cell (steady: local pseudo time step)
+    FaceVector c0_face;            ///< c0_f (= c1_f: backward Euler or steady)
+    FaceVector F_star, gamma_p;    ///< F_f without its pressure part; Gamma_f = 1 / (c0 + a*_f)
+    CellVector pressure_rhs;
+  };
+} // namespace fvfsi

@@ -1,0 +1,47 @@
+#pragma once
+// A finite-volume matrix stored by faces, as OpenFOAM's lduMatrix: one diagonal coefficient per
+// owned cell and, per face f between P and N, the coefficient of N in row P (`upper`) and of P in
+// row N (`lower`). Face loops assemble into it without touching a sparse-matrix library (one
+// Trilinos add per entry is slow); copy_to() then writes whole rows at once. It also gives the
+// off-diagonal product sum_N a_PN x_N that the pressure-velocity coupling needs (the H operator).
+//
+// A processor face (P owned, N a ghost) fills only row P: the rank that owns N has the same face
+// with the roles swapped and fills its own row.
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <fvfsi/mesh/fv_geometry.h>
+
+#include <vector>
+
+namespace fvfsi
+{
+  template <int dim>
+  class FaceMatrix
+  {
+  public:
+    explicit FaceMatrix(const FVGeometry<dim>& geometry);
+
+    /// Size the coefficient arrays for the current mesh and set them to zero.
+    void reinit();
+    /// Set every coefficient to zero.
+    void zero();
+
+    /// Add a symmetric face coupling a (a > 0): a (x_P - x_N) in row P, a (x_N - x_P) in row N,
+    /// the orthogonal part of a diffusion term with a = Gamma_f S_f / d_fn (Eqs 19, 27).
+    void add_face_diffusion(unsigned int f, double a);
+
+    /// Write the coefficients into `matrix` (sparsity from Laplacian::reinit_matrix), row by row.
+    void copy_to(dealii::TrilinosWrappers::SparseMatrix& matrix) const;
+
+    /// y_P = sum_N a_PN x_N for every owned cell P (x with up-to-date ghosts).
+    void off_diagonal_product(const CellVector& x, std::vector<double>& y) const;
+
+    std::vector<double> diagonal; ///< a_P, per owned cell
+    std::vector<double> upper;    ///< per face: a_PN (interior and processor faces)
+    std::vector<double> lower;    ///< per face: a_NP (interior faces)
+
+  private:
+    const FVGeometry<dim>& geometry;
+  };
+} // namespace fvfsi

@@ -1,0 +1,279 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/utilities.h>
+
+#include <fvfsi/apps/fluid_scene.h>
+#include <fvfsi/apps/poisson.h> // initialize_function
+#include <fvfsi/io/vtu_output.h>
+#include <fvfsi/mesh/mesh_builder.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <stdexcept>
+
+namespace fvfsi
+{
+  using namespace dealii;
+
+  void FluidSceneParameters::declare(ParameterHandler& prm)
+  {
+    prm.enter_subsection("Fluid scene");
+    prm.add_parameter("Force patches", force_patches,
+                      "Patches whose summed fluid force is reported as drag (x) and lift (y) "
+                      "[N, per unit depth in 2D], comma separated.");
+    prm.add_parameter("Exact velocity", exact_velocity,
+                      "Exact u(x, y[, z], t) (dim expressions separated by `;`) for "
+                      "results.max_velocity_error; empty: none.");
+    prm.add_parameter("Exact pressure", exact_pressure,
+                      "Exact p(x, y[, z], t) [Pa] for results.max_pressure_error; empty: none.");
+    prm.add_parameter("Analysis window", analysis_window,
+                      "Transient: mean, amplitude and frequency of drag and lift over the last "
+                      "this many seconds (0: none).",
+                      Patterns::Double(0));
+    prm.add_parameter("Output interval", output_interval,
+                      "Write VTU every this many time steps (0: only the final state).");
+    prm.add_parameter("Progress interval", progress_interval,
+                      "Print a progress line every this many time steps.", Patterns::Integer(1));
+    prm.leave_subsection();
+  }
+
+  PeriodicStatistics periodic_statistics(const std::vector<double>& t, const std::vector<double>& q)
+  {
+    PeriodicStatistics s;
+    if (q.size() < 3)
+      return s;
+    const auto [lo, hi] = std::minmax_element(q.begin(), q.end());
+    s.mean = (*hi + *lo) / 2;
+    s.amplitude = (*hi - *lo) / 2;
+    // Up-crossings of the mean, linearly interpolated; frequency from the first and last.
+    std::vector<double> crossings;
+    for (unsigned int i = 1; i < q.size(); ++i)
+      if (q[i - 1] < s.mean && q[i] >= s.mean)
+        crossings.push_back(t[i - 1] + (t[i] - t[i - 1]) * (s.mean - q[i - 1]) / (q[i] - q[i - 1]));
+    if (crossings.size() >= 2)
+      s.frequency = (crossings.size() - 1) / (crossings.back() - crossings.front());
+    return s;
+  }
+
+  template <int dim>
+  FluidScene<dim>::FluidScene(const MeshParameters& mesh_parameters,
+                              const FluidParameters& fluid_parameters,
+                              const FluidSceneParameters& scene_parameters, MPI_Comm comm,
+                              const std::string& prm_directory, const std::string& output_directory)
+    : comm(comm)
+    , mesh_parameters(mesh_parameters)
+    , fluid_parameters(fluid_parameters)
+    , scene_parameters(scene_parameters)
+    , prm_directory(prm_directory)
+    , output_directory(output_directory)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+    , triangulation(comm)
+  {
+  }
+
+  template <int dim>
+  void FluidScene<dim>::make_grid()
+  {
+    make_mesh(mesh_parameters, triangulation, prm_directory);
+    fv = std::make_unique<FVGeometry<dim>>(triangulation);
+    fluid = std::make_unique<FluidSolver<dim>>(*fv, mesh_parameters, fluid_parameters);
+  }
+
+  template <int dim>
+  Tensor<1, dim> FluidScene<dim>::body_force() const
+  {
+    Tensor<1, dim> force;
+    for (const auto& patch : scene_parameters.force_patches)
+      force += fluid->patch_force(mesh_parameters.patch_id(patch));
+    return force;
+  }
+
+  template <int dim>
+  void FluidScene<dim>::record_time_history()
+  {
+    // One line per time step (collective: forces and diagnostics are MPI reductions).
+    const Tensor<1, dim> force = body_force();
+    const double courant = fluid->courant_number(), continuity = fluid->continuity_error();
+    history_t.push_back(fluid->time());
+    history_drag.push_back(force[0]);
+    history_lift.push_back(force[1]);
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    std::ofstream out(output_directory + "/fluid_history.txt",
+                      history_t.size() == 1 ? std::ios::trunc : std::ios::app);
+    if (history_t.size() == 1)
+      out << "# t drag lift courant continuity_error\n";
+    out << std::setprecision(10) << fluid->time() << ' ' << force[0] << ' ' << force[1] << ' '
+        << courant << ' ' << continuity << "\n";
+  }
+
+  template <int dim>
+  void FluidScene<dim>::compute_errors()
+  {
+    if (!scene_parameters.exact_velocity.empty())
+    {
+      FunctionParser<dim> exact(dim);
+      initialize_function(exact, scene_parameters.exact_velocity, "Fluid scene/Exact velocity");
+      exact.set_time(fluid->time());
+      double error = 0, l2 = 0;
+      for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
+        for (unsigned int j = 0; j < dim; ++j)
+        {
+          const double e = fluid->velocity()[c][j] - exact.value(fv->centroid[c], j);
+          error = std::max(error, std::abs(e));
+          l2 += fv->cell_volume[c] * e * e;
+        }
+      result.max_velocity_error = Utilities::MPI::max(error, comm);
+      result.l2_velocity_error = std::sqrt(Utilities::MPI::sum(l2, comm));
+    }
+    if (!scene_parameters.exact_pressure.empty())
+    {
+      FunctionParser<dim> exact(1);
+      initialize_function(exact, scene_parameters.exact_pressure, "Fluid scene/Exact pressure");
+      exact.set_time(fluid->time());
+      // Without an outlet the pressure is known up to a constant: compare p - mean(p).
+      const double rho = fluid_parameters.rho;
+      double offset = 0, volume = 0;
+      if (!fluid->pressure_level_is_fixed())
+      {
+        for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
+        {
+          offset += fv->cell_volume[c] * (rho * fluid->kinematic_pressure().local_element(c) -
+                                          exact.value(fv->centroid[c]));
+          volume += fv->cell_volume[c];
+        }
+        offset = Utilities::MPI::sum(offset, comm) / Utilities::MPI::sum(volume, comm);
+      }
+      double error = 0, l2 = 0;
+      for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
+      {
+        const double e = rho * fluid->kinematic_pressure().local_element(c) - offset -
+                         exact.value(fv->centroid[c]);
+        error = std::max(error, std::abs(e));
+        l2 += fv->cell_volume[c] * e * e;
+      }
+      result.max_pressure_error = Utilities::MPI::max(error, comm);
+      result.l2_pressure_error = std::sqrt(Utilities::MPI::sum(l2, comm));
+    }
+  }
+
+  template <int dim>
+  void FluidScene<dim>::output_results() const
+  {
+    // Velocity, pressure [Pa] and vorticity (2D: the scalar dv/dx - du/dy; 3D: its magnitude).
+    std::vector<CellVector> fields(dim + 2, fv->make_cell_vector());
+    for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        fields[d].local_element(c) = fluid->velocity()[c][d];
+      fields[dim].local_element(c) =
+        fluid_parameters.rho * fluid->kinematic_pressure().local_element(c);
+      Tensor<2, dim> G; // G[i][j] = d u_j / d x_i
+      for (unsigned int j = 0; j < dim; ++j)
+        for (unsigned int i = 0; i < dim; ++i)
+          G[i][j] = fluid->velocity_gradient(j)[c][i];
+      if constexpr (dim == 2)
+        fields[dim + 1].local_element(c) = G[0][1] - G[1][0];
+      else
+      {
+        const Tensor<1, 3> w({G[1][2] - G[2][1], G[2][0] - G[0][2], G[0][1] - G[1][0]});
+        fields[dim + 1].local_element(c) = w.norm();
+      }
+    }
+    for (auto& f : fields)
+      f.update_ghost_values();
+    const char* axis[] = {"x", "y", "z"};
+    std::vector<std::pair<std::string, const CellVector*>> named;
+    for (unsigned int d = 0; d < dim; ++d)
+      named.emplace_back(std::string("u_") + axis[d], &fields[d]);
+    named.emplace_back("p", &fields[dim]);
+    named.emplace_back("vorticity", &fields[dim + 1]);
+    VtuOutput<dim>(*fv, output_directory, "fluid").write(named, fluid->step(), fluid->time());
+  }
+
+  template <int dim>
+  void FluidScene<dim>::run()
+  {
+    make_grid();
+    pcout << "fvfsi: fluid " << dim << "D, " << fv->n_global_cells() << " cells, "
+          << (fluid_parameters.transient ? "transient (PISO, BDF2)" : "steady (pseudo-transient)")
+          << ", convection " << fluid_parameters.convection << "\n";
+    if (!fluid_parameters.transient)
+    {
+      result.n_time_steps = fluid->solve_steady();
+      record_time_history();
+      pcout << "fvfsi: fluid steady solution after " << result.n_time_steps << " pseudo time steps\n";
+    }
+    else
+    {
+      const unsigned int total = static_cast<unsigned int>(
+        std::round(fluid_parameters.end_time / fluid_parameters.time_step));
+      for (unsigned int step = 1; step <= total; ++step)
+      {
+        try
+        {
+          fluid->solve_time_step();
+        }
+        catch (...)
+        {
+          pcout << "fvfsi: fluid run stopped at time step " << step << "; the last written "
+                << "output (VTU, fluid_history.txt) holds the last good state\n";
+          throw;
+        }
+        result.n_time_steps = step;
+        record_time_history();
+        if (step % scene_parameters.progress_interval == 0 || step == total)
+          pcout << "fvfsi: fluid step " << step << "/" << total << ", t = " << fluid->time()
+                << " s, Courant " << fluid->courant_number() << ", drag " << history_drag.back()
+                << ", lift " << history_lift.back() << "\n";
+        if (scene_parameters.output_interval > 0 && step % scene_parameters.output_interval == 0)
+          output_results();
+      }
+    }
+    if (scene_parameters.output_interval == 0 || !fluid_parameters.transient)
+      output_results();
+    compute_errors();
+    fluid->timer().print_summary();
+  }
+
+  template <int dim>
+  void FluidScene<dim>::write_summary(Summary& summary) const
+  {
+    summary.set("n_cells", fv->n_global_cells());
+    summary.set_result("time_steps", result.n_time_steps);
+    summary.set_result("continuity_error", fluid->continuity_error());
+    if (!scene_parameters.force_patches.empty())
+    {
+      summary.set_result("drag", history_drag.back());
+      summary.set_result("lift", history_lift.back());
+    }
+    if (result.max_velocity_error >= 0)
+    {
+      summary.set_result("max_velocity_error", result.max_velocity_error);
+      summary.set_result("l2_velocity_error", result.l2_velocity_error);
+    }
+    if (result.max_pressure_error >= 0)
+    {
+      summary.set_result("max_pressure_error", result.max_pressure_error);
+      summary.set_result("l2_pressure_error", result.l2_pressure_error);
+    }
+    if (fluid_parameters.transient && scene_parameters.analysis_window > 0)
+    {
+      std::vector<double> t, drag, lift;
+      for (unsigned int i = 0; i < history_t.size(); ++i)
+        if (history_t[i] >= fluid->time() - scene_parameters.analysis_window - 1e-12)
+        {
+          t.push_back(history_t[i]);
+          drag.push_back(history_drag[i]);
+          lift.push_back(history_lift[i]);
+        }
+      const auto d = periodic_statistics(t, drag), l = periodic_statistics(t, lift);
+      summary.set_result("drag_mean_amplitude_frequency", {d.mean, d.amplitude, d.frequency});
+      summary.set_result("lift_mean_amplitude_frequency", {l.mean, l.amplitude, l.frequency});
+    }
+  }
+
+  template class FluidScene<2>;
+  template class FluidScene<3>;
+} // namespace fvfsi

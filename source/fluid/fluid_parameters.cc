@@ -1,0 +1,105 @@
+#include <deal.II/base/utilities.h>
+
+#include <fvfsi/fluid/fluid_parameters.h>
+
+#include <stdexcept>
+
+namespace fvfsi
+{
+  using namespace dealii;
+
+  void FluidParameters::declare(ParameterHandler& prm)
+  {
+    prm.enter_subsection("Fluid");
+    prm.add_parameter("Density", rho, "rho [kg/m^3] (forces and pressure output are in N, Pa).",
+                      Patterns::Double(0));
+    prm.add_parameter("Kinematic viscosity", nu, "nu [m^2/s].", Patterns::Double(0));
+    prm.add_parameter("Body force", body_force,
+                      "g [m/s^2] per unit mass, dim expressions of x, y[, z], t separated by `;`.");
+    prm.add_parameter("Initial velocity", initial_velocity,
+                      "u at t = 0 [m/s], dim expressions of x, y[, z] separated by `;`.");
+    prm.add_parameter("Transient", transient,
+                      "true: time accurate, BDF2 (first step backward Euler), PISO; false: steady, "
+                      "by local pseudo time steps (set by Momentum relaxation) until the solution "
+                      "stops changing (the consistent Rhie-Chow flux makes the result independent "
+                      "of the relaxation).");
+    prm.add_parameter("Time step", time_step, "dt [s] (transient).", Patterns::Double(0));
+    prm.add_parameter("Momentum relaxation", momentum_relaxation,
+                      "Steady: alpha in (0, 1]; each cell takes the pseudo time step with "
+                      "1 / dt_P = a*_P (1 - alpha) / alpha (a*_P its momentum coefficient per unit "
+                      "volume), i.e. SIMPLE-style under-relaxation of velocity and face fluxes.",
+                      Patterns::Double(0.01, 1));
+    prm.add_parameter("End time", end_time, "[s] (transient only).", Patterns::Double(0));
+    prm.add_parameter("Steady tolerance", steady_tolerance,
+                      "Steady: stop when max|u^k - u^(k-1)| / max|u| over one pseudo step is below this.",
+                      Patterns::Double(0));
+    prm.add_parameter("Max steady iterations", max_steady_iterations,
+                      "Steady: limit of pseudo time steps (exceeding it stops the run with an error).",
+                      Patterns::Integer(1));
+    prm.add_parameter("Outer correctors", outer_correctors,
+                      "Outer (PIMPLE) loops per time step: momentum re-assembled with the latest "
+                      "fluxes; 1 = plain PISO.",
+                      Patterns::Integer(1, 1000));
+    prm.add_parameter("Pressure correctors", pressure_correctors,
+                      "PISO pressure corrections per outer loop.", Patterns::Integer(1, 100));
+    prm.add_parameter("Non-orthogonal correctors", non_orthogonal_correctors,
+                      "Extra pressure solves per corrector that update the explicit "
+                      "non-orthogonal part of Eq. 19 (0 on orthogonal meshes; with 1 the steady "
+                      "iteration on the distorted Kovasznay meshes of tests/fluid oscillates "
+                      "instead of converging, with 2 it converges).",
+                      Patterns::Integer(0, 100));
+    prm.add_parameter("Momentum predictor", momentum_predictor,
+                      "Solve the momentum equation before the pressure correctors.");
+    prm.add_parameter("Convection scheme", convection,
+                      "Face velocity of the convection term, by deferred correction on an implicit "
+                      "upwind part: upwind (first order), linear upwind (second order: upwind cell "
+                      "value + its Gauss-Green gradient times (r_f - r_U)), central (second order, "
+                      "unbounded at high cell Reynolds numbers).",
+                      Patterns::Selection("upwind|linear upwind|central"));
+    const std::string syntax =
+      " Syntax: `patch: expression | patch: expression`, vector components separated by `;`.";
+    prm.add_parameter("Velocity inlet", velocity_inlet,
+                      "Patches with a given velocity u(x, t) [m/s]." + syntax);
+    prm.add_parameter("Outlet", outlet,
+                      "Patches with a given pressure p(x, t) [Pa] and zero-gradient velocity." +
+                        syntax);
+    prm.add_parameter("Wall", wall,
+                      "No-slip wall patches (moving with the mesh), comma separated.");
+    prm.add_parameter("Symmetry", symmetry, "Symmetry-plane (slip) patches, comma separated.");
+    prm.leave_subsection();
+
+    momentum_solver.method = "GMRES";
+    momentum_solver.preconditioner = "ILU";
+    momentum_solver.reduction = 1e-6;
+    momentum_solver.absolute_tolerance = 1e-15;
+    momentum_solver.declare(prm, "Fluid momentum solver");
+    pressure_solver.reduction = 1e-6;
+    pressure_solver.absolute_tolerance = 1e-15;
+    pressure_solver.declare(prm, "Fluid pressure solver");
+  }
+
+  std::vector<FluidBoundaryCondition> FluidParameters::boundary_conditions() const
+  {
+    using Type = FluidBoundaryCondition::Type;
+    std::vector<FluidBoundaryCondition> bcs;
+    const auto with_values = [&bcs](const std::string& entry, const std::string& name, Type type) {
+      for (const auto& item : Utilities::split_string_list(entry, '|'))
+      {
+        const auto colon = item.find(':');
+        if (colon == std::string::npos)
+          throw std::runtime_error("Fluid/" + name + ": `" + item + "` is not `patch: expression`");
+        bcs.push_back({Utilities::trim(item.substr(0, colon)), type,
+                       Utilities::trim(item.substr(colon + 1))});
+      }
+    };
+    const auto names_only = [&bcs](const std::string& entry, Type type) {
+      for (const auto& item : Utilities::split_string_list(entry, ','))
+        bcs.push_back({item, type, ""});
+    };
+    with_values(velocity_inlet, "Velocity inlet", Type::velocity_inlet);
+    with_values(outlet, "Outlet", Type::outlet);
+    names_only(wall, Type::wall);
+    names_only(symmetry, Type::symmetry);
+    return bcs;
+  }
+} // namespace fvfsi

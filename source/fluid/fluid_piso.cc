@@ -1,0 +1,321 @@
+// The steps of one PISO time step of the FluidSolver (see fluid_solver.h for the equations):
+// momentum assembly and predictor, the pressure equation from continuity with the consistent
+// Rhie-Chow flux, and the flux and velocity corrections.
+
+#include <deal.II/base/mpi.h>
+
+#include <fvfsi/fluid/fluid_solver.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace fvfsi
+{
+  using namespace dealii;
+
+  template <int dim>
+  void FluidSolver<dim>::assemble_momentum()
+  {
+    TimerOutput::Scope scope(timer_output, "momentum assembly");
+    double c0, c1, c2;
+    time_coefficients(c0, c1, c2);
+    momentum.zero();
+    for (unsigned int j = 0; j < dim; ++j)
+      B_rest[j] = 0;
+
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      const auto& face = geometry.faces[f];
+      if (face.kind == FaceKind::ghost_boundary)
+        continue;
+      const double phi = F[f] - F_mesh[f];            // flux relative to the moving face
+      const double a_diffusion = prm.nu * face.area / face.d_n; // Eq. 27
+      const unsigned int P = face.P;
+      if (face.N != invalid_cell)
+      {
+        // Viscous term: orthogonal part of Eq. 19 implicit. Convection: upwind implicit,
+        // phi u_f leaves P and enters N.
+        momentum.add_face_diffusion(f, a_diffusion);
+        momentum.diagonal[P] += std::max(phi, 0.0);
+        momentum.upper[f] += std::min(phi, 0.0);
+        if (face.kind == FaceKind::interior)
+        {
+          momentum.diagonal[face.N] += std::max(-phi, 0.0);
+          momentum.lower[f] -= std::max(phi, 0.0);
+        }
+        add_convection_correction(f, phi);
+        continue;
+      }
+      const Tensor<1, dim>& u_b = boundary_u[f];
+      switch (face_condition[f].type)
+      {
+        case Type::velocity_inlet:
+        case Type::wall:
+          // u_b given: Eq. 23 for the viscous flux, the convected value is u_b.
+          momentum.diagonal[P] += a_diffusion;
+          for (unsigned int j = 0; j < dim; ++j)
+            B_rest[j].local_element(P) += (a_diffusion - phi) * u_b[j];
+          break;
+        case Type::outlet:
+          // Zero normal gradient: no viscous flux; outflow convects u_P (implicit) corrected to
+          // u_b, backflow convects u_b (explicit).
+          momentum.diagonal[P] += std::max(phi, 0.0);
+          for (unsigned int j = 0; j < dim; ++j)
+            B_rest[j].local_element(P) -=
+              std::min(phi, 0.0) * u_b[j] +
+              (prm.convection == "upwind" ? 0.0 : std::max(phi, 0.0) * (u_b[j] - u[P][j]));
+          break;
+        case Type::symmetry:
+          // No flux through the plane; the viscous force of the normal velocity, explicit.
+          for (unsigned int j = 0; j < dim; ++j)
+            B_rest[j].local_element(P) += a_diffusion * (u_b[j] - u[P][j]);
+          break;
+      }
+    }
+    // Explicit non-orthogonal part of Eq. 19 for the viscous term.
+    for (unsigned int j = 0; j < dim; ++j)
+      laplacian.add_correction(nu_f, velocity_bc, grad_u[j], B_rest[j]);
+
+    // Time derivative (backward Euler / BDF2) and body force. Steady: a local pseudo time step,
+    // c0_P = a*_P (1 - alpha) / alpha from the spatial coefficient a*_P assembled above.
+    const double alpha = prm.momentum_relaxation;
+    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+    {
+      const double V = geometry.cell_volume[c];
+      c0_cell[c] = prm.transient ? c0 : momentum.diagonal[c] / V * (1 - alpha) / alpha;
+      const double c1_P = prm.transient ? c1 : c0_cell[c];
+      momentum.diagonal[c] += c0_cell[c] * V;
+      for (unsigned int j = 0; j < dim; ++j)
+      {
+        B_time[j][c] = V * (c1_P * u_old.components[j].local_element(c) -
+                            c2 * u_old2.components[j].local_element(c));
+        B_rest[j].local_element(c) += V * body_force.value(geometry.centroid[c], j);
+      }
+    }
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::add_convection_correction(const unsigned int f, const double phi)
+  {
+    // Deferred correction phi (u_f - u_f^upwind) of the higher-order face value.
+    if (prm.convection == "upwind")
+      return;
+    const auto& face = geometry.faces[f];
+    const bool from_P = phi >= 0;
+    const unsigned int U = from_P ? face.P : face.N;
+    const Tensor<1, dim> to_face = face.centre - geometry.centroid[U]; // r_f - r_U
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      double correction;
+      if (prm.convection == "linear upwind")
+        correction = to_face * grad_u[j][U];
+      else // central
+        correction = face.w * u[face.P][j] + (1 - face.w) * u[face.N][j] - u[U][j];
+      B_rest[j].local_element(face.P) -= phi * correction;
+      if (face.kind == FaceKind::interior)
+        B_rest[j].local_element(face.N) += phi * correction;
+    }
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::solve_momentum()
+  {
+    TimerOutput::Scope scope(timer_output, "momentum solve");
+    // A u_j = B_j - V (grad p)_j, all components with one matrix.
+    momentum.copy_to(momentum_matrix);
+    momentum_solver.initialize(momentum_matrix);
+    CellVector rhs = geometry.make_cell_vector();
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+        rhs.local_element(c) = B_rest[j].local_element(c) + B_time[j][c] -
+                               geometry.cell_volume[c] * grad_p[c][j];
+      momentum_solver.solve(momentum_matrix, u.components[j], rhs,
+                            "fluid momentum, component " + std::to_string(j));
+    }
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::assemble_pressure_matrix()
+  {
+    TimerOutput::Scope scope(timer_output, "pressure matrix + preconditioner");
+    // a_P = A_P / V_P = c0 + a*_P; a*_f = 1 / (1/a*)_f; Gamma_f = 1 / (c0 + a*_f), the same
+    // Gamma_f as in the flux correction, so that the corrected fluxes satisfy continuity.
+    double c0, c1, c2;
+    time_coefficients(c0, c1, c2);
+    (void)c1;
+    (void)c2;
+    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+    {
+      a.local_element(c) = momentum.diagonal[c] / geometry.cell_volume[c];
+      a_star.local_element(c) = a.local_element(c) - c0_cell[c];
+    }
+    a.update_ghost_values();
+    a_star.update_ghost_values();
+    pressure_equation.zero();
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      const auto& face = geometry.faces[f];
+      if (face.kind == FaceKind::ghost_boundary)
+        continue;
+      if (face.N == invalid_cell && face_condition[f].type != Type::outlet)
+      {
+        gamma_p[f] = 0; // the flux is given
+        continue;
+      }
+      const double inverse_a_star =
+        face.N == invalid_cell
+          ? 1 / a_star.local_element(face.P)
+          : face.w / a_star.local_element(face.P) + (1 - face.w) / a_star.local_element(face.N);
+      a_star_f[f] = 1 / inverse_a_star;
+      c0_face[f] = prm.transient ? c0 : a_star_f[f] * (1 - prm.momentum_relaxation) /
+                                          prm.momentum_relaxation;
+      gamma_p[f] = 1 / (c0_face[f] + a_star_f[f]);
+      const double coefficient = gamma_p[f] * face.area / face.d_n;
+      if (face.N == invalid_cell)
+        pressure_equation.diagonal[face.P] += coefficient; // Dirichlet (outlet), Eq. 23
+      else
+        pressure_equation.add_face_diffusion(f, coefficient);
+    }
+    // No outlet: fix the level by doubling the diagonal of global cell 0 (exact for the
+    // compatible singular system: its solution with p = 0 there solves the modified one).
+    if (!pressure_level_fixed && geometry.n_owned_cells() > 0 && geometry.global_index(0) == 0)
+      pressure_equation.diagonal[0] *= 2;
+    pressure_equation.copy_to(pressure_matrix);
+    pressure_solver.initialize(pressure_matrix);
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::compute_predicted_fluxes()
+  {
+    TimerOutput::Scope scope(timer_output, "predicted fluxes");
+    // h_P = (B^rest_P - sum_N A_PN u_N) / V_P with the latest u.
+    std::vector<double> off_diagonal;
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      momentum.off_diagonal_product(u.components[j], off_diagonal);
+      for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+        h.components[j].local_element(c) =
+          (B_rest[j].local_element(c) - off_diagonal[c]) / geometry.cell_volume[c];
+    }
+    h.update_ghost_values();
+    // F*_f = (c1 F_f^o - c2 F_f^oo + a*_f S_f . (h / a*)_f) / (c0 + a*_f); on inlets and walls
+    // the flux is given.
+    double c0, c1, c2;
+    time_coefficients(c0, c1, c2);
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      const auto& face = geometry.faces[f];
+      if (face.kind == FaceKind::ghost_boundary)
+        continue;
+      if (face.N == invalid_cell && face_condition[f].type != Type::outlet)
+      {
+        F_star[f] = face_condition[f].type == Type::velocity_inlet ? face.S * boundary_u[f]
+                                                                    : F_mesh[f];
+        continue;
+      }
+      const unsigned int P = face.P, N = face.N;
+      Tensor<1, dim> h_by_a;
+      Tensor<1, dim> m; // from the interpolation point to the face centre
+      std::array<Tensor<1, dim>, dim> grad; // interpolated grad u_j
+      if (N == invalid_cell)
+      {
+        h_by_a = h[P] / a_star.local_element(P);
+        m = face.centre - geometry.centroid[P];
+        for (unsigned int j = 0; j < dim; ++j)
+          grad[j] = grad_u[j][P];
+      }
+      else
+      {
+        h_by_a = face.w * h[P] / a_star.local_element(P) + (1 - face.w) * h[N] / a_star.local_element(N);
+        m = face.centre - (face.w * geometry.centroid[P] + (1 - face.w) * geometry.centroid[N]);
+        for (unsigned int j = 0; j < dim; ++j)
+          grad[j] = face.w * grad_u[j][P] + (1 - face.w) * grad_u[j][N];
+      }
+      for (unsigned int j = 0; j < dim; ++j)
+        h_by_a[j] += m * grad[j]; // skewness correction
+      const double c1_f = prm.transient ? c1 : c0_face[f];
+      F_star[f] = gamma_p[f] * (c1_f * F_old[f] - c2 * F_old2[f] + a_star_f[f] * (face.S * h_by_a));
+    }
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::solve_pressure()
+  {
+    TimerOutput::Scope scope(timer_output, "pressure solve");
+    // Continuity sum_f F_f = 0 with F_f = F*_f - Gamma_f S_f (n.grad p)_f: the Laplacian of p
+    // with Gamma = 1/a_f, the divergence of F* as source, Eq. 19's correction explicit and
+    // updated by the non-orthogonal correctors.
+    for (unsigned int k = 0; k <= prm.non_orthogonal_correctors; ++k)
+    {
+      pressure_rhs = 0;
+      for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+      {
+        const auto& face = geometry.faces[f];
+        if (face.kind == FaceKind::ghost_boundary)
+          continue;
+        pressure_rhs.local_element(face.P) -= F_star[f];
+        if (face.kind == FaceKind::interior)
+          pressure_rhs.local_element(face.N) += F_star[f];
+        if (face.N == invalid_cell && face_condition[f].type == Type::outlet)
+          pressure_rhs.local_element(face.P) += gamma_p[f] * face.area / face.d_n * boundary_p[f];
+      }
+      laplacian.add_correction(gamma_p, pressure_bc, grad_p, pressure_rhs);
+      pressure_solver.solve(pressure_matrix, p, pressure_rhs, "fluid pressure");
+      if (k < prm.non_orthogonal_correctors)
+      {
+        // The flux correction below must use the gradient of this last solve's correction, so
+        // the gradient is only updated between solves.
+        update_pressure_boundary_values();
+        update_pressure_gradient();
+      }
+    }
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::correct_fluxes()
+  {
+    TimerOutput::Scope scope(timer_output, "flux and velocity correction");
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      const auto& face = geometry.faces[f];
+      if (face.kind == FaceKind::ghost_boundary)
+        continue;
+      if (gamma_p[f] == 0)
+        F[f] = F_star[f];
+      else
+        F[f] = F_star[f] -
+               gamma_p[f] * face.area * laplacian.normal_gradient(f, p, grad_p, pressure_bc);
+    }
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::correct_velocity()
+  {
+    TimerOutput::Scope scope(timer_output, "flux and velocity correction");
+    // u_P = (h_P + B^time_P / V_P - (grad p)_P) / a_P, with h from the latest u.
+    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+    {
+      const double V = geometry.cell_volume[c];
+      const Tensor<1, dim> gp = grad_p[c];
+      for (unsigned int j = 0; j < dim; ++j)
+        u.components[j].local_element(c) =
+          (h.components[j].local_element(c) + B_time[j][c] / V - gp[j]) / a.local_element(c);
+    }
+    u.update_ghost_values();
+  }
+
+  // The members above are defined in this file; instantiate them here.
+#define FVFSI_INSTANTIATE(dim)                                                                    \
+  template void FluidSolver<dim>::assemble_momentum();                                            \
+  template void FluidSolver<dim>::add_convection_correction(unsigned int, double);               \
+  template void FluidSolver<dim>::solve_momentum();                                               \
+  template void FluidSolver<dim>::assemble_pressure_matrix();                                     \
+  template void FluidSolver<dim>::compute_predicted_fluxes();                                     \
+  template void FluidSolver<dim>::solve_pressure();                                               \
+  template void FluidSolver<dim>::correct_fluxes();                                               \
+  template void FluidSolver<dim>::correct_velocity();
+  FVFSI_INSTANTIATE(2)
+  FVFSI_INSTANTIATE(3)
+#undef FVFSI_INSTANTIATE
+} // namespace fvfsi

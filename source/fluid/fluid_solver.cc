@@ -1,0 +1,406 @@
+// The FluidSolver's set-up, boundary values and gradients, and the time step driver. The PISO
+// steps themselves (momentum, pressure, corrections) are in fluid_piso.cc.
+
+#include <deal.II/base/mpi.h>
+
+#include <fvfsi/apps/poisson.h> // initialize_function
+#include <fvfsi/base/exceptions.h>
+#include <fvfsi/fluid/fluid_solver.h>
+#include <fvfsi/fv/ghost_faces.h>
+#include <fvfsi/fv/gradients.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace fvfsi
+{
+  using namespace dealii;
+
+  template <int dim>
+  FluidSolver<dim>::FluidSolver(const FVGeometry<dim>& geometry,
+                                const MeshParameters& mesh_parameters,
+                                const FluidParameters& parameters)
+    : geometry(geometry)
+    , prm(parameters)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(geometry.comm()) == 0)
+    , timer_output(MPI_COMM_SELF, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , vertex_interpolation(geometry)
+    , laplacian(geometry)
+    , body_force(dim)
+    , momentum(geometry)
+    , pressure_equation(geometry)
+    , momentum_solver(parameters.momentum_solver)
+    , pressure_solver(parameters.pressure_solver)
+  {
+    initialize_function(body_force, prm.body_force, "Fluid/Body force");
+    setup_boundary_conditions(mesh_parameters);
+
+    for (auto* field : {&u, &u_old, &u_old2, &h})
+      *field = CellVectorField<dim>(geometry);
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      grad_u[j] = CellGradient<dim>(geometry);
+      vertex_u[j].assign(geometry.vertices().size(), 0.0);
+      B_rest[j] = geometry.make_cell_vector();
+      B_time[j].assign(geometry.n_owned_cells(), 0.0);
+    }
+    grad_p = CellGradient<dim>(geometry);
+    vertex_p.assign(geometry.vertices().size(), 0.0);
+    p = geometry.make_cell_vector();
+    a = geometry.make_cell_vector();
+    a_star = geometry.make_cell_vector();
+    pressure_rhs = geometry.make_cell_vector();
+    const unsigned int n_faces = geometry.faces.size();
+    for (auto* field : {&F, &F_old, &F_old2, &F_mesh, &F_star, &gamma_p, &a_star_f, &boundary_p})
+      field->assign(n_faces, 0.0);
+    boundary_u.assign(n_faces, Tensor<1, dim>());
+    c0_cell.assign(geometry.n_owned_cells(), 0.0);
+    c0_face.assign(n_faces, 0.0);
+    nu_f.assign(n_faces, prm.nu);
+    laplacian.reinit_matrix(momentum_matrix);
+    laplacian.reinit_matrix(pressure_matrix);
+    set_initial_conditions();
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::setup_boundary_conditions(const MeshParameters& mesh_parameters)
+  {
+    std::map<unsigned int, FaceCondition> by_patch;
+    for (const auto& bc : prm.boundary_conditions())
+    {
+      FaceCondition condition{bc.type, -1};
+      if (!bc.expression.empty())
+      {
+        const unsigned int n_components = bc.type == Type::outlet ? 1 : dim;
+        functions.push_back(std::make_unique<FunctionParser<dim>>(n_components));
+        initialize_function(*functions.back(), bc.expression,
+                            "Fluid boundary condition on " + bc.patch);
+        condition.expression = functions.size() - 1;
+      }
+      const unsigned int id = mesh_parameters.patch_id(bc.patch);
+      by_patch[id] = condition;
+      const bool velocity_given = bc.type == Type::velocity_inlet || bc.type == Type::wall;
+      velocity_bc.patch_type[id] = velocity_given ? BoundaryType::dirichlet : BoundaryType::neumann;
+      pressure_bc.patch_type[id] =
+        bc.type == Type::outlet ? BoundaryType::dirichlet : BoundaryType::neumann;
+    }
+    face_condition.resize(geometry.faces.size());
+    double n_outlet_faces = 0;
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+      if (geometry.faces[f].N == invalid_cell)
+      {
+        const auto it = by_patch.find(geometry.faces[f].patch);
+        if (it == by_patch.end())
+          throw std::runtime_error("Fluid: patch `" +
+                                   mesh_parameters.patch_name(geometry.faces[f].patch) +
+                                   "` has no boundary condition (Fluid/Velocity inlet, Outlet, "
+                                   "Wall or Symmetry)");
+        face_condition[f] = it->second;
+        if (it->second.type == Type::outlet)
+          n_outlet_faces += 1;
+      }
+    // Without a pressure boundary the pressure is fixed to 0 in one reference cell.
+    pressure_level_fixed = Utilities::MPI::sum(n_outlet_faces, geometry.comm()) > 0;
+    velocity_bc.value.assign(geometry.faces.size(), 0.0); // values live in boundary_u
+    pressure_bc.value.assign(geometry.faces.size(), 0.0);
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::set_initial_conditions()
+  {
+    // u from the expression, fluxes F_f = S_f . u_f by linear interpolation (boundary: S_f . u_b).
+    FunctionParser<dim> u0(dim);
+    initialize_function(u0, prm.initial_velocity, "Fluid/Initial velocity");
+    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+      for (unsigned int j = 0; j < dim; ++j)
+        u.components[j].local_element(c) = u0.value(geometry.centroid[c], j);
+    u.update_ghost_values();
+    update_velocity_boundary_values();
+    update_velocity_gradients();
+    update_velocity_boundary_values();
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      const auto& face = geometry.faces[f];
+      if (face.N == invalid_cell)
+        F[f] = face.S * boundary_u[f];
+      else
+        F[f] = face.S * (face.w * u[face.P] + (1 - face.w) * u[face.N]);
+    }
+    F_old = F;
+    F_old2 = F;
+    u_old = u;
+    u_old2 = u;
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::update_velocity_boundary_values()
+  {
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      const auto& face = geometry.faces[f];
+      if (face.kind != FaceKind::boundary)
+        continue;
+      const unsigned int P = face.P;
+      Tensor<1, dim> extrapolated = u[P]; // zero normal gradient: u_P + k_P . grad u_P
+      for (unsigned int j = 0; j < dim; ++j)
+        extrapolated[j] += face.k_P * grad_u[j][P];
+      switch (face_condition[f].type)
+      {
+        case Type::velocity_inlet:
+          for (unsigned int j = 0; j < dim; ++j)
+            boundary_u[f][j] = functions[face_condition[f].expression]->value(face.centre, j);
+          break;
+        case Type::wall:
+          // The wall moves with the mesh: its velocity is the swept volume rate per area.
+          boundary_u[f] = (F_mesh[f] / face.area) * face.n;
+          break;
+        case Type::outlet:
+          boundary_u[f] = extrapolated;
+          break;
+        case Type::symmetry:
+          boundary_u[f] = extrapolated - (extrapolated * face.n) * face.n;
+          break;
+      }
+    }
+    update_ghost_boundary_faces(geometry, boundary_u);
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::update_velocity_gradients()
+  {
+    TimerOutput::Scope scope(timer_output, "velocity gradients");
+    // Vertex values by least squares (App. B) with the boundary values, then Gauss-Green (Eq. 37).
+    FaceVector boundary_values(geometry.faces.size());
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+        boundary_values[f] = boundary_u[f][j];
+      vertex_interpolation.interpolate(u.components[j], boundary_values, vertex_u[j]);
+      gauss_green_gradient(geometry, vertex_u[j], grad_u[j]);
+    }
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::update_pressure_boundary_values()
+  {
+    // Outlets: the given pressure; elsewhere linear extrapolation from the cell (paper 3.2),
+    // p_b = p_P + (r_f - r_P) . (grad p)_P.
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      const auto& face = geometry.faces[f];
+      if (face.kind != FaceKind::boundary)
+        continue;
+      if (face_condition[f].type == Type::outlet)
+        boundary_p[f] = functions[face_condition[f].expression]->value(face.centre) / prm.rho;
+      else
+        boundary_p[f] = p.local_element(face.P) + face.d * grad_p[face.P];
+      pressure_bc.value[f] = boundary_p[f];
+    }
+    update_ghost_boundary_faces(geometry, boundary_p);
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::update_pressure_gradient()
+  {
+    TimerOutput::Scope scope(timer_output, "pressure gradient");
+    vertex_interpolation.interpolate(p, boundary_p, vertex_p);
+    gauss_green_gradient(geometry, vertex_p, grad_p);
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::time_coefficients(double& c0, double& c1, double& c2) const
+  {
+    // Backward Euler on the first step, BDF2 (Eq. 17) after. (Steady runs use local
+    // coefficients, see assemble_momentum.)
+    const double dt = prm.time_step;
+    if (!prm.transient)
+      c0 = c1 = c2 = 0;
+    else if (time_step_number <= 1)
+    {
+      c0 = c1 = 1 / dt;
+      c2 = 0;
+    }
+    else
+    {
+      c0 = 1.5 / dt;
+      c1 = 2 / dt;
+      c2 = 0.5 / dt;
+    }
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::shift_time_levels()
+  {
+    u_old2 = u_old;
+    u_old = u;
+    F_old2 = F_old;
+    F_old = F;
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::check_finite(const char* field) const
+  {
+    double sum = 0;
+    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+    {
+      sum += std::abs(p.local_element(c));
+      for (unsigned int j = 0; j < dim; ++j)
+        sum += std::abs(u.components[j].local_element(c));
+    }
+    if (!std::isfinite(Utilities::MPI::sum(sum, geometry.comm())))
+      throw std::runtime_error("Fluid: " + std::string(field) + " is not finite at time step " +
+                               std::to_string(time_step_number) + " (t = " +
+                               Utilities::to_string(current_time) +
+                               " s); reduce Fluid/Time step or check the boundary conditions");
+  }
+
+  template <int dim>
+  double FluidSolver<dim>::solve_time_step()
+  {
+    if (time_step_number > 0)
+      shift_time_levels();
+    ++time_step_number;
+    current_time += prm.time_step;
+    body_force.set_time(current_time);
+    for (auto& fn : functions)
+      fn->set_time(current_time);
+
+    try
+    {
+      for (unsigned int outer = 0; outer < prm.outer_correctors; ++outer)
+        solve_outer_iteration();
+    }
+    catch (const std::exception& e)
+    {
+      const std::string what = concise_message(e);
+      throw std::runtime_error(what.rfind("Fluid:", 0) == 0
+                                 ? what
+                                 : "Fluid: at time step " + std::to_string(time_step_number) +
+                                     " (t = " + Utilities::to_string(current_time) + " s): " + what);
+    }
+    update_velocity_boundary_values();
+    update_velocity_gradients();
+
+    // Relative change over the step.
+    double max_du = 0, max_u = 0;
+    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+    {
+      max_du = std::max(max_du, (u[c] - u_old[c]).norm());
+      max_u = std::max(max_u, u[c].norm());
+    }
+    max_du = Utilities::MPI::max(max_du, geometry.comm());
+    max_u = Utilities::MPI::max(max_u, geometry.comm());
+    return max_du / std::max(max_u, 1e-300);
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::solve_outer_iteration()
+  {
+    // One PISO sequence: momentum predictor with the latest fluxes, then pressure correctors.
+    update_velocity_boundary_values();
+    update_velocity_gradients();
+    update_pressure_boundary_values();
+    update_pressure_gradient();
+    assemble_momentum();
+    if (prm.momentum_predictor)
+    {
+      solve_momentum();
+      check_finite("velocity (momentum predictor)");
+    }
+    assemble_pressure_matrix();
+    for (unsigned int corrector = 0; corrector < prm.pressure_correctors; ++corrector)
+    {
+      compute_predicted_fluxes();
+      solve_pressure();
+      correct_fluxes();
+      update_pressure_boundary_values();
+      update_pressure_gradient();
+      correct_velocity();
+      check_finite("pressure or velocity (pressure corrector)");
+    }
+  }
+
+  template <int dim>
+  unsigned int FluidSolver<dim>::solve_steady()
+  {
+    double change = 0;
+    for (unsigned int k = 1; k <= prm.max_steady_iterations; ++k)
+    {
+      change = solve_time_step();
+      if (k % 100 == 0)
+        pcout << "fvfsi: fluid pseudo time step " << k << ": relative change " << change
+              << " (tolerance " << prm.steady_tolerance << "), continuity error "
+              << continuity_error() << "\n";
+      if (change < prm.steady_tolerance)
+        return k;
+    }
+    throw std::runtime_error("Fluid: the steady solution did not converge in " +
+                             std::to_string(prm.max_steady_iterations) +
+                             " pseudo time steps (relative change " + Utilities::to_string(change) +
+                             "); raise Fluid/Max steady iterations or the pseudo time step");
+  }
+
+  template <int dim>
+  Tensor<1, dim> FluidSolver<dim>::patch_force(const unsigned int patch) const
+  {
+    Tensor<1, dim> force;
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      const auto& face = geometry.faces[f];
+      if (face.kind != FaceKind::boundary || face.patch != patch)
+        continue;
+      Tensor<1, dim> du_dn = boundary_u[f] - u[face.P]; // Eq. 23
+      for (unsigned int j = 0; j < dim; ++j)
+        du_dn[j] -= face.k_P * grad_u[j][face.P];
+      du_dn /= face.d_n;
+      force += prm.rho * face.area * (boundary_p[f] * face.n - prm.nu * du_dn);
+    }
+    return Utilities::MPI::sum(force, geometry.comm());
+  }
+
+  template <int dim>
+  double FluidSolver<dim>::continuity_error() const
+  {
+    std::vector<double> net(geometry.n_owned_cells(), 0.0), total(geometry.n_owned_cells(), 0.0);
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      const auto& face = geometry.faces[f];
+      if (face.kind == FaceKind::ghost_boundary)
+        continue;
+      net[face.P] += F[f];
+      total[face.P] += std::abs(F[f]);
+      if (face.kind == FaceKind::interior)
+      {
+        net[face.N] -= F[f];
+        total[face.N] += std::abs(F[f]);
+      }
+    }
+    double error = 0;
+    for (unsigned int c = 0; c < net.size(); ++c)
+      error = std::max(error, std::abs(net[c]) / std::max(total[c], 1e-300));
+    return Utilities::MPI::max(error, geometry.comm());
+  }
+
+  template <int dim>
+  double FluidSolver<dim>::courant_number() const
+  {
+    std::vector<double> outflow(geometry.n_owned_cells(), 0.0);
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      const auto& face = geometry.faces[f];
+      if (face.kind == FaceKind::ghost_boundary)
+        continue;
+      const double phi = std::abs(F[f] - F_mesh[f]);
+      outflow[face.P] += phi;
+      if (face.kind == FaceKind::interior)
+        outflow[face.N] += phi;
+    }
+    double courant = 0;
+    for (unsigned int c = 0; c < outflow.size(); ++c)
+      courant = std::max(courant, prm.time_step * outflow[c] / (2 * geometry.cell_volume[c]));
+    return Utilities::MPI::max(courant, geometry.comm());
+  }
+
+  template class FluidSolver<2>;
+  template class FluidSolver<3>;
+} // namespace fvfsi
