@@ -50,6 +50,11 @@ namespace fvfsi
                       Patterns::Integer(0, 100));
     prm.add_parameter("Momentum predictor", momentum_predictor,
                       "Solve the momentum equation before the pressure correctors.");
+    prm.add_parameter("Preconditioner update interval", preconditioner_update_interval,
+                      "Rebuild the momentum ILU and pressure AMG preconditioners every this many "
+                      "time steps (the matrices change slowly; an older preconditioner only costs "
+                      "a few more Krylov iterations, never accuracy).",
+                      Patterns::Integer(1));
     prm.add_parameter("Convection scheme", convection,
                       "Face velocity of the convection term, by deferred correction on an implicit "
                       "upwind part: upwind (first order), linear upwind (second order: upwind cell "
@@ -70,7 +75,7 @@ namespace fvfsi
 
     momentum_solver.method = "GMRES";
     momentum_solver.preconditioner = "ILU";
-    momentum_solver.reduction = 1e-6;
+    momentum_solver.reduction = 1e-3;
     momentum_solver.absolute_tolerance = 1e-15;
     momentum_solver.declare(prm, "Fluid momentum solver");
     pressure_solver.reduction = 1e-6;

@@ -337,7 +337,7 @@ namespace fvfsi
     throw std::runtime_error("Fluid: the steady solution did not converge in " +
                              std::to_string(prm.max_steady_iterations) +
                              " pseudo time steps (relative change " + Utilities::to_string(change) +
-                             "); raise Fluid/Max steady iterations or the pseudo time step");
+                             "); raise Fluid/Max steady iterations, or lower Fluid/Momentum relaxation if the change oscillates");
   }
 
   template <int dim>

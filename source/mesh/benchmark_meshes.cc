@@ -87,7 +87,8 @@ namespace fvfsi
 
   bool is_benchmark_mesh(const std::string& name)
   {
-    return name == "fvfsi_quarter_plate_with_hole" || name == "fvfsi_turek_hron_flag";
+    return name == "fvfsi_quarter_plate_with_hole" || name == "fvfsi_turek_hron_flag" ||
+           name == "fvfsi_turek_hron_channel";
   }
 
   template <int dim>
@@ -99,6 +100,8 @@ namespace fvfsi
         return quarter_plate_with_hole(arguments, tria);
       if (name == "fvfsi_turek_hron_flag")
         return turek_hron_flag(arguments, tria);
+      if (name == "fvfsi_turek_hron_channel")
+        return make_turek_hron_channel(arguments, tria);
     }
     throw std::runtime_error("Mesh/Generator = " + name + " is not available in " + std::to_string(dim) + "D");
   }

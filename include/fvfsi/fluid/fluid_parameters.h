@@ -36,7 +36,7 @@ namespace fvfsi
     bool transient = true;    ///< false: steady (relaxed pseudo time steps to convergence)
     double time_step = 1e-3;  ///< dt [s] (transient)
     double end_time = 1;      ///< [s]
-    double momentum_relaxation = 0.9;         ///< steady: alpha, the local pseudo time step
+    double momentum_relaxation = 0.95;        ///< steady: alpha, the local pseudo time step
     double steady_tolerance = 1e-8;           ///< steady: stop when the relative change is below
     unsigned int max_steady_iterations = 5000; ///< steady: pseudo time step limit
 
@@ -44,6 +44,7 @@ namespace fvfsi
     unsigned int pressure_correctors = 2;    ///< PISO pressure correctors per outer loop
     unsigned int non_orthogonal_correctors = 2; ///< extra pressure solves for Eq. 19's correction
     bool momentum_predictor = true;
+    unsigned int preconditioner_update_interval = 10; ///< time steps between ILU/AMG rebuilds
     std::string convection = "linear upwind"; ///< upwind | linear upwind | central
 
     std::string velocity_inlet, outlet, wall, symmetry;

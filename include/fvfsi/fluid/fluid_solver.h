@@ -128,6 +128,12 @@ namespace fvfsi
     void correct_fluxes();
     void correct_velocity();
     void shift_time_levels();
+    /// True when the preconditioners are to be rebuilt (every `Preconditioner update interval`
+    /// time steps; in between, the matrices change a little and the old ones still work).
+    bool refresh_preconditioners() const
+    {
+      return (time_step_number - 1) % prm.preconditioner_update_interval == 0;
+    }
     void check_finite(const char* field) const;
 
     const FVGeometry<dim>& geometry;

@@ -26,6 +26,9 @@ namespace fvfsi
    *   cylinder arc to 0.6, y in [0.19, 0.21], nx x ny cells. Boundary ids: 0 on the cylinder
    *   (clamped end), 1 elsewhere (the flag surface).
    */
+  /// The Turek-Hron fluid domain (fvfsi_turek_hron_channel), in turek_hron_channel.cc.
+  void make_turek_hron_channel(const std::string& arguments, dealii::Triangulation<2>& tria);
+
   template <int dim>
   void make_benchmark_mesh(const std::string& name, const std::string& arguments, dealii::Triangulation<dim>& tria);
 } // namespace fvfsi
