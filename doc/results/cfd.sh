@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Turek-Hron CFD2 (steady, Re = 100) and CFD3 (periodic, Re = 200) with the rigid flag: the
+# tables of doc/results/cfd.md. Every run: one MPI rank, Release build, one run at a time.
+#   CFD2: prm/turek_hron_cfd2.prm with Mesh/Generator arguments n = 16, 24, 32, 48.
+#   CFD3: prm/turek_hron_cfd3.prm with n = 16 and 24 (dt = 0.002 s), and n = 16 with dt = 0.001 s.
+# Prints markdown table rows (cells, drag, lift, errors against the reference, pseudo or time
+# steps, wall seconds) and writes doc/results/cfd3_forces.png from the CFD3 histories.
+# Usage: doc/results/cfd.sh [BUILD_DIR [cfd2|cfd3 ...]]   (BUILD_DIR must hold a Release fvfsi)
+set -uo pipefail
+script_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+repo=$(cd "$script_dir/../.." && pwd)
+build=${1:-$repo/build}
+shift || true
+sections=("$@")
+[[ ${#sections[@]} -eq 0 ]] && sections=(cfd2 cfd3)
+runs=$build/cfd_runs
+mkdir -p "$runs"
+fvfsi=$build/fvfsi
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load: $(cut -d' ' -f1-3 /proc/loadavg)"
+
+field() { /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(eval(sys.argv[2]))" "$@"; }
+
+for section in "${sections[@]}"; do
+  case $section in
+    cfd2)
+      echo "| n | cells | drag [N/m] | error | lift [N/m] | error | pseudo steps | wall [s] |"
+      echo "|---|---|---|---|---|---|---|---|"
+      for n in 16 24 32 48; do
+        out=$runs/cfd2_$n
+        "$fvfsi" "$repo/prm/turek_hron_cfd2.prm" --set "Mesh/Generator arguments=$n" \
+          --set "Output directory=$out" > "$out.log" 2>&1 || { echo "| $n | failed, see $out.log |"; continue; }
+        s=$out/summary.json
+        echo "| $n | $(field $s "d['n_cells']") | $(field $s "'%.3f' % d['results']['drag']") | $(field $s "'%+.2f%%' % (100*(d['results']['drag']/136.7-1))") | $(field $s "'%.3f' % d['results']['lift']") | $(field $s "'%+.2f%%' % (100*(d['results']['lift']/10.53-1))") | $(field $s "d['results']['time_steps']") | $(field $s "'%.1f' % d['wall_seconds']") |"
+      done ;;
+    cfd3)
+      echo "| n | cells | dt [s] | drag mean | amplitude | lift mean | amplitude | frequency [Hz] | Courant | wall [s] |"
+      echo "|---|---|---|---|---|---|---|---|---|---|"
+      for case in "16 0.002" "24 0.002" "16 0.001"; do
+        set -- $case
+        out=$runs/cfd3_$1_$2
+        "$fvfsi" "$repo/prm/turek_hron_cfd3.prm" --set "Mesh/Generator arguments=$1" \
+          --set "Fluid/Time step=$2" --set "Output directory=$out" > "$out.log" 2>&1 ||
+          { echo "| $1 | failed, see $out.log |"; continue; }
+        s=$out/summary.json
+        d="d['results']['drag_mean_amplitude_frequency']"; l="d['results']['lift_mean_amplitude_frequency']"
+        echo "| $1 | $(field $s "d['n_cells']") | $2 | $(field $s "'%.2f' % $d[0]") | $(field $s "'%.3f' % $d[1]") | $(field $s "'%.2f' % $l[0]") | $(field $s "'%.2f' % $l[1]") | $(field $s "'%.4f' % $l[2]") | $(tail -1 $out/fluid_history.txt | awk '{printf "%.2f", $4}') | $(field $s "'%.0f' % d['wall_seconds']") |"
+      done
+      /usr/bin/python3 "$script_dir/cfd3_plot.py" "$script_dir/cfd3_forces.png" "$runs"/cfd3_*/fluid_history.txt ;;
+  esac
+done
