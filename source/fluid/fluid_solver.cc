@@ -248,10 +248,18 @@ namespace fvfsi
         sum += std::abs(u.components[j].local_element(c));
     }
     if (!std::isfinite(Utilities::MPI::sum(sum, geometry.comm())))
-      throw std::runtime_error("Fluid: " + std::string(field) + " is not finite at time step " +
-                               std::to_string(time_step_number) + " (t = " +
-                               Utilities::to_string(current_time) +
-                               " s); reduce Fluid/Time step or check the boundary conditions");
+      throw std::runtime_error("Fluid: " + std::string(field) + " is not finite at " + step_name() +
+                               (prm.transient ? "; reduce Fluid/Time step"
+                                              : "; lower Fluid/Momentum relaxation") +
+                               " or check the boundary conditions");
+  }
+
+  template <int dim>
+  std::string FluidSolver<dim>::step_name() const
+  {
+    return prm.transient ? "time step " + std::to_string(time_step_number) + " (t = " +
+                             Utilities::to_string(current_time) + " s)"
+                         : "pseudo time step " + std::to_string(time_step_number);
   }
 
   template <int dim>
@@ -275,8 +283,7 @@ namespace fvfsi
       const std::string what = concise_message(e);
       throw std::runtime_error(what.rfind("Fluid:", 0) == 0
                                  ? what
-                                 : "Fluid: at time step " + std::to_string(time_step_number) +
-                                     " (t = " + Utilities::to_string(current_time) + " s): " + what);
+                                 : "Fluid: at " + step_name() + ": " + what);
     }
     update_velocity_boundary_values();
     update_velocity_gradients();

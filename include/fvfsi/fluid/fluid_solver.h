@@ -135,6 +135,8 @@ namespace fvfsi
       return (time_step_number - 1) % prm.preconditioner_update_interval == 0;
     }
     void check_finite(const char* field) const;
+    /// "time step N (t = ... s)" or "pseudo time step N", for messages.
+    std::string step_name() const;
 
     const FVGeometry<dim>& geometry;
     FluidParameters prm;
