@@ -6,7 +6,8 @@
  * to x = 0.6), a parabolic inflow of mean velocity U, no slip on the walls, the cylinder and
  * the flag, and p = 0 at the outlet. rho = 1000 kg/m^3, nu = 1e-3 m^2/s. With U = 0.2 m/s the
  * Reynolds number Re = U D / nu (D = 0.1 m) is 20: the flow is steady (Turek and Hron's CFD1;
- * their drag and lift on cylinder + flag are 14.29 N/m and 1.119 N/m per unit depth).
+ * their drag and lift on cylinder + flag are 14.29 N/m and 1.119 N/m per unit depth). The
+ * second part starts the flow at Re = 100 (U = 1 m/s) from rest and follows it for 20 time steps.
  *
  * The equations (paper section 2.1, Eqs 1-2), with p the kinematic pressure p/rho [m^2/s^2]:
  *   div u = 0,
@@ -14,9 +15,10 @@
  * Velocity and pressure live at the same points, the cell centres (a collocated, cell-centred
  * finite-volume method: one value per cell, FE_DGQ(0) in deal.II terms). fvfsi::FluidSolver is
  * the full solver (BDF2, moving meshes, symmetry planes, 3D, outer correctors); this program
- * writes out its core for the steady 2D case in one class, with step-1's and step-2's pieces
- * (FVGeometry, VertexInterpolation, gauss_green_gradient, Laplacian, LinearSolver) plus the
- * face-stored matrix FaceMatrix, and then checks that both give the same forces.
+ * writes out its core for a fixed 2D mesh with inlet, outlet and walls in one class, with step-1's
+ * and step-2's pieces (FVGeometry, VertexInterpolation, gauss_green_gradient, Laplacian,
+ * LinearSolver) plus the face-stored matrix FaceMatrix, and then checks that both give the same
+ * forces, steady and transient.
  *
  * The algorithm, one (pseudo) time step:
  *   1. boundary values, vertex values and Gauss-Green gradients of u and p;
@@ -76,25 +78,32 @@ constexpr int dim = 2;
 // fvfsi_turek_hron_channel.
 constexpr double rho = 1000;   // density [kg/m^3] (only for the forces)
 constexpr double nu = 1e-3;    // kinematic viscosity [m^2/s]
-constexpr double U = 0.2;      // mean inflow velocity [m/s]: Re = U D / nu = 20
 constexpr double H = 0.41;     // channel height [m]
 constexpr unsigned int inlet = 0, outlet = 1, walls = 2, cylinder = 3, flag = 4;
 
-// The inflow: u_x = 1.5 U 4 y (H - y) / H^2, mean U.
-double inflow(const Point<dim>& x) { return 1.5 * U * 4 * x[1] * (H - x[1]) / (H * H); }
+// The inflow: u_x = 1.5 U 4 y (H - y) / H^2, mean U [m/s]; U = 0.2 m/s gives Re = U D / nu = 20,
+// U = 1 m/s Re = 100.
+double inflow(const Point<dim>& x, const double U)
+{
+  return 1.5 * U * 4 * x[1] * (H - x[1]) / (H * H);
+}
 
 // @sect3{The CylinderFlow class}
-// The state is that of fvfsi::FluidSolver (fluid_solver.h) without the time levels of BDF2: the
-// cell velocity u and kinematic pressure p, the volumetric face fluxes F_f = S_f . u_f [m^2/s per
-// unit depth] of this and of the previous pseudo time step, and what is derived from them (vertex
+// The state is that of fvfsi::FluidSolver (fluid_solver.h): the cell velocity u and kinematic
+// pressure p, the volumetric face fluxes F_f = S_f . u_f [m^2/s per unit depth] of this and of
+// the two previous (pseudo) time steps (BDF2 needs both), and what is derived from them (vertex
 // values, Gauss-Green gradients, boundary values). The momentum equation of the current step is
 // kept, because the PISO correctors re-use it: its matrix (FaceMatrix: the diagonal A_P and, per
 // face, the two off-diagonal coefficients), its explicit source B_rest and its time source B_time.
 class CylinderFlow
 {
 public:
-  CylinderFlow(unsigned int n, double alpha, bool consistent = true);
-  void run();
+  /// dt = 0: steady, by local pseudo time steps set by alpha; dt > 0: time accurate (BDF2).
+  CylinderFlow(unsigned int n, double U, double alpha, bool consistent = true, double dt = 0);
+  /// Steady: iterate to convergence. Transient: n_time_steps steps, drag and lift every
+  /// `interval` steps into `history` (t, drag, lift).
+  void run(unsigned int n_time_steps = 0, unsigned int interval = 1,
+           std::vector<std::array<double, 3>>* history = nullptr);
   Tensor<1, dim> force() const; // of the fluid on cylinder + flag [N/m]
   unsigned int n_steps() const { return step; }
   unsigned int n_cells() const { return fv->n_global_cells(); }
@@ -117,7 +126,9 @@ private:
   void output_results() const;
 
   const unsigned int n;      // cells on a quarter of the cylinder
+  const double U;            // mean inflow velocity [m/s]
   const double alpha;        // momentum relaxation, sets the local pseudo time step
+  const double dt;           // time step [s], 0 for steady
   const bool consistent;     // consistent (true) or classic Rhie-Chow face flux
   MPI_Comm mpi_communicator;
   ConditionalOStream pcout;
@@ -133,10 +144,11 @@ private:
   TrilinosWrappers::SparseMatrix momentum_matrix, pressure_matrix;
   std::unique_ptr<LinearSolver> momentum_solver, pressure_solver;
 
-  CellVectorField<dim> u, u_old;
+  CellVectorField<dim> u, u_old, u_old2; // u^n, u^(n-1), u^(n-2)
   CellVector p;
-  FaceVector F, F_old;
+  FaceVector F, F_old, F_old2;
   unsigned int step = 0;
+  void time_coefficients(double& c0, double& c1, double& c2) const;
 
   std::array<CellGradient<dim>, dim> grad_u;
   CellGradient<dim> grad_p;
@@ -154,11 +166,14 @@ private:
   CellVector pressure_rhs;
 };
 
-CylinderFlow::CylinderFlow(const unsigned int n, const double alpha, const bool consistent)
-    : n(n), alpha(alpha), consistent(consistent), mpi_communicator(MPI_COMM_WORLD),
+CylinderFlow::CylinderFlow(const unsigned int n, const double U, const double alpha,
+                           const bool consistent, const double dt)
+    : n(n), U(U), alpha(alpha), dt(dt), consistent(consistent), mpi_communicator(MPI_COMM_WORLD),
       pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0),
       triangulation(mpi_communicator)
 {
+  if (!consistent && dt > 0)
+    throw std::logic_error("the classic flux is written out for steady runs only");
 }
 
 // @sect4{CylinderFlow::make_grid}
@@ -222,7 +237,7 @@ void CylinderFlow::setup_system()
   momentum_solver = std::make_unique<LinearSolver>(momentum_parameters);
   pressure_solver = std::make_unique<LinearSolver>(pressure_parameters);
 
-  for (auto* field : {&u, &u_old, &h})
+  for (auto* field : {&u, &u_old, &u_old2, &h})
     *field = CellVectorField<dim>(*fv);
   for (unsigned int j = 0; j < dim; ++j)
   {
@@ -238,7 +253,7 @@ void CylinderFlow::setup_system()
   a_star = fv->make_cell_vector();
   c0_cell_ghosted = fv->make_cell_vector();
   pressure_rhs = fv->make_cell_vector();
-  for (auto* field : {&F, &F_old, &F_star, &gamma_p, &a_star_f, &c0_face, &boundary_p})
+  for (auto* field : {&F, &F_old, &F_old2, &F_star, &gamma_p, &a_star_f, &c0_face, &boundary_p})
     field->assign(n_faces, 0.0);
   boundary_u.assign(n_faces, Tensor<1, dim>());
   c0_cell.assign(fv->n_owned_cells(), 0.0);
@@ -251,6 +266,7 @@ void CylinderFlow::setup_system()
     if (fv->faces[f].N == invalid_cell)
       F[f] = fv->faces[f].S * boundary_u[f];
   F_old = F;
+  F_old2 = F;
 }
 
 // @sect4{Boundary values and gradients}
@@ -268,7 +284,7 @@ void CylinderFlow::update_velocity_boundary_values()
     if (face.kind != FaceKind::boundary)
       continue;
     if (face.patch == inlet)
-      boundary_u[f] = Tensor<1, dim>({inflow(face.centre), 0.});
+      boundary_u[f] = Tensor<1, dim>({inflow(face.centre, U), 0.});
     else if (face.patch == outlet)
       for (unsigned int j = 0; j < dim; ++j)
         boundary_u[f][j] = u[face.P][j] + face.k_P * grad_u[j][face.P];
@@ -338,8 +354,10 @@ void CylinderFlow::update_pressure_gradient()
 //   V_P of the spatial terms assembled so far. Then A_P / V_P = a*_P / alpha: this is exactly
 //   SIMPLE's implicit under-relaxation of the momentum equation with factor alpha, written as a
 //   time step (each cell gets its own "Courant number" of about alpha / (1 - alpha)). The time
-//   source B_time = V_P c0_P u_P^old. A transient run uses the same code with c0 = 1/dt (backward
-//   Euler) or 3/(2 dt) (BDF2, Eq. 17), the same in all cells.
+//   source B_time = V_P c0_P u_P^old. A transient run (dt > 0) uses the same code with BDF2
+//   (Eq. 17): du/dt ~ c0 u - c1 u^old + c2 u^old2 with c0 = 3/(2 dt), c1 = 2/dt, c2 = 1/(2 dt),
+//   backward Euler (c0 = c1 = 1/dt, c2 = 0) on the first step, the same in all cells, and
+//   B_time = V_P (c1 u^old - c2 u^old2).
 void CylinderFlow::assemble_momentum()
 {
   momentum->zero();
@@ -392,13 +410,35 @@ void CylinderFlow::assemble_momentum()
   for (unsigned int j = 0; j < dim; ++j)
     laplacian->add_correction(nu_f, velocity_bc, grad_u[j], B_rest[j]);
 
+  double c0, c1, c2;
+  time_coefficients(c0, c1, c2);
   for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
   {
     const double V = fv->cell_volume[c];
-    c0_cell[c] = momentum->diagonal[c] / V * (1 - alpha) / alpha;
+    c0_cell[c] = dt > 0 ? c0 : momentum->diagonal[c] / V * (1 - alpha) / alpha;
+    const double c1_P = dt > 0 ? c1 : c0_cell[c];
     momentum->diagonal[c] += c0_cell[c] * V;
     for (unsigned int j = 0; j < dim; ++j)
-      B_time[j][c] = V * c0_cell[c] * u_old.components[j].local_element(c);
+      B_time[j][c] = V * (c1_P * u_old.components[j].local_element(c) -
+                          c2 * u_old2.components[j].local_element(c));
+  }
+}
+
+// The BDF2 coefficients of a transient run (zero when steady).
+void CylinderFlow::time_coefficients(double& c0, double& c1, double& c2) const
+{
+  if (dt == 0)
+    c0 = c1 = c2 = 0;
+  else if (step == 1)
+  {
+    c0 = c1 = 1 / dt;
+    c2 = 0;
+  }
+  else
+  {
+    c0 = 1.5 / dt;
+    c1 = 2 / dt;
+    c2 = 0.5 / dt;
   }
 }
 
@@ -460,7 +500,8 @@ void CylinderFlow::solve_momentum()
 // (see the table of run()). The classic flux is
 //   F_f = S_f . ((h + c0 u^old) / a)_f - (1 / a)_f S_f (n . grad p)_f;
 // at a steady state (h + c0 u) / a = u + (grad p) / a in each cell, so its pressure term,
-// (1 / a)_f S_f . [(grad p)_interpolated - n (n . grad p)_f], is weighted by 1 / a = alpha / a*. Interpolating h / a* (a velocity) rather than h keeps F*_f second order where a*_P jumps
+// (1 / a)_f S_f . [(grad p)_interpolated - n (n . grad p)_f], is weighted by 1 / a = alpha / a*.
+// Interpolating h / a* (a velocity) rather than h keeps F*_f second order where a*_P jumps
 // from cell to cell (graded meshes), and (h / a*)_f is corrected for skewness with the velocity
 // gradient (h / a* = u + (grad p) / a* at steady state; the point of linear interpolation on
 // the line P-N misses the face centre by m_f).
@@ -469,6 +510,8 @@ void CylinderFlow::solve_momentum()
 // p_b = 0 through Eq. 23 (a Dirichlet face: only the diagonal).
 void CylinderFlow::assemble_pressure_equation()
 {
+  double c0, c1, c2;
+  time_coefficients(c0, c1, c2);
   for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
   {
     a.local_element(c) = momentum->diagonal[c] / fv->cell_volume[c];
@@ -494,7 +537,7 @@ void CylinderFlow::assemble_pressure_equation()
             ? 1 / a_star.local_element(face.P)
             : face.w / a_star.local_element(face.P) + (1 - face.w) / a_star.local_element(face.N);
     a_star_f[f] = 1 / inverse_a_star;
-    c0_face[f] = a_star_f[f] * (1 - alpha) / alpha;
+    c0_face[f] = dt > 0 ? c0 : a_star_f[f] * (1 - alpha) / alpha;
     gamma_p[f] = 1 / (c0_face[f] + a_star_f[f]);
     if (!consistent) // classic: Gamma_f = (1 / a)_f, a = c0 + a*
       gamma_p[f] = face.N == invalid_cell ? 1 / a.local_element(face.P)
@@ -576,7 +619,11 @@ void CylinderFlow::compute_predicted_fluxes()
     }
     for (unsigned int j = 0; j < dim; ++j)
       h_by_a[j] += m * grad[j];
-    F_star[f] = gamma_p[f] * (c0_face[f] * F_old[f] + a_star_f[f] * (face.S * h_by_a));
+    // Steady: c1_f = c0_f, c2 = 0; transient: BDF2 as in the cell equation.
+    double c0, c1, c2;
+    time_coefficients(c0, c1, c2);
+    const double c1_f = dt > 0 ? c1 : c0_face[f];
+    F_star[f] = gamma_p[f] * (c1_f * F_old[f] - c2 * F_old2[f] + a_star_f[f] * (face.S * h_by_a));
   }
 }
 
@@ -645,8 +692,11 @@ double CylinderFlow::solve_time_step()
 {
   if (step > 0)
   {
+    u_old2 = u_old;
     u_old = u;
     u_old.update_ghost_values();
+    u_old2.update_ghost_values();
+    F_old2 = F_old;
     F_old = F;
   }
   ++step;
@@ -721,7 +771,8 @@ Tensor<1, dim> CylinderFlow::force() const
 
 // @sect4{CylinderFlow::output_results}
 // u, the pressure in Pa (rho p) and the vorticity dv/dx - du/dy [1/s] to
-// cylinder-<alpha>_0000.pvtu.
+// cylinder-<100 alpha>_0000.pvtu, cylinder-classic-<100 alpha>_0000.pvtu (steady) or
+// cylinder-transient_0000.pvtu.
 void CylinderFlow::output_results() const
 {
   CellVector pressure = fv->make_cell_vector(), vorticity = fv->make_cell_vector();
@@ -732,7 +783,11 @@ void CylinderFlow::output_results() const
   }
   pressure.update_ghost_values();
   vorticity.update_ghost_values();
-  VtuOutput<dim>(*fv, ".", "cylinder-" + std::to_string(static_cast<int>(100 * alpha + 0.5)))
+  const std::string name =
+      dt > 0 ? "cylinder-transient"
+             : std::string(consistent ? "cylinder-" : "cylinder-classic-") +
+                   std::to_string(static_cast<int>(100 * alpha + 0.5));
+  VtuOutput<dim>(*fv, ".", name)
       .write({{"u_x", &u.components[0]},
               {"u_y", &u.components[1]},
               {"p", &pressure},
@@ -741,24 +796,47 @@ void CylinderFlow::output_results() const
 }
 
 // @sect4{CylinderFlow::run}
-void CylinderFlow::run()
+void CylinderFlow::run(const unsigned int n_time_steps, const unsigned int interval,
+                       std::vector<std::array<double, 3>>* history)
 {
   make_grid();
   setup_system();
-  pcout << "  " << fv->n_global_cells() << " cells, alpha = " << alpha << std::endl;
-  solve();
-  const Tensor<1, dim> f = force();
-  pcout << "  steady after " << step << " PISO steps: drag " << f[0] << " N/m, lift " << f[1]
-        << " N/m" << std::endl;
+  if (dt == 0)
+  {
+    pcout << "  " << fv->n_global_cells() << " cells, steady, alpha = " << alpha << std::endl;
+    solve();
+    const Tensor<1, dim> f = force();
+    pcout << "  steady after " << step << " PISO steps: drag " << f[0] << " N/m, lift " << f[1]
+          << " N/m" << std::endl;
+  }
+  else
+  {
+    pcout << "  " << fv->n_global_cells() << " cells, dt = " << dt << " s" << std::endl;
+    for (unsigned int k = 1; k <= n_time_steps; ++k)
+    {
+      solve_time_step();
+      if (k % interval == 0 && history != nullptr)
+      {
+        const Tensor<1, dim> f = force();
+        history->push_back(std::array<double, 3>{{k * dt, f[0], f[1]}});
+        pcout << "  t = " << k * dt << " s: drag " << f[0] << " N/m, lift " << f[1] << " N/m"
+              << std::endl;
+      }
+    }
+  }
   output_results();
 }
 
 // @sect3{The same case with fvfsi::FluidSolver}
 // The library solver on the same mesh, with the parameters a .prm file would set (as in
-// prm/turek_hron_cfd2.prm, with U = 0.2 m/s). Its solve_time_step() is solve_time_step() above
-// (source/fluid/fluid_solver.cc, source/fluid/fluid_piso.cc: the same functions by the same
-// names), plus what this case does not need.
-Tensor<1, dim> library_force(const unsigned int n, const double alpha, unsigned int& n_steps)
+// prm/turek_hron_cfd2.prm and turek_hron_cfd3.prm, with this program's U). Its solve_time_step()
+// is solve_time_step() above (source/fluid/fluid_solver.cc, source/fluid/fluid_piso.cc: the same
+// steps by the same names), plus what this case does not need (symmetry planes, moving meshes,
+// outer correctors, 3D). Steady (dt = 0): returns the converged force and sets n_steps.
+// Transient: n_steps time steps, the force every `interval` steps into `history`.
+Tensor<1, dim> library_force(const unsigned int n, const double U, const double alpha,
+                             const double dt, unsigned int& n_steps, const unsigned int interval = 1,
+                             std::vector<std::array<double, 3>>* history = nullptr)
 {
   parallel::distributed::Triangulation<dim> triangulation(MPI_COMM_WORLD);
   MeshParameters mesh;
@@ -773,11 +851,13 @@ Tensor<1, dim> library_force(const unsigned int n, const double alpha, unsigned 
   FluidParameters prm;
   prm.rho = rho;
   prm.nu = nu;
-  prm.transient = false;
+  prm.transient = dt > 0;
+  prm.time_step = dt;
   prm.momentum_relaxation = alpha;
   prm.steady_tolerance = 1e-9;
   prm.convection = "linear upwind";
-  prm.velocity_inlet = "inlet: 1.5*0.2*4*y*(0.41-y)/0.41^2; 0";
+  prm.velocity_inlet =
+      "inlet: 1.5*" + Utilities::to_string(U) + "*4*y*(0.41-y)/0.41^2; 0";
   prm.outlet = "outlet: 0";
   prm.wall = "walls, cylinder, flag";
   // FluidParameters::declare() sets these defaults for .prm files; set them here.
@@ -789,8 +869,24 @@ Tensor<1, dim> library_force(const unsigned int n, const double alpha, unsigned 
   prm.pressure_solver.absolute_tolerance = 1e-15;
 
   FluidSolver<dim> fluid(fv, mesh, prm);
-  n_steps = fluid.solve_steady();
-  return fluid.patch_force(cylinder) + fluid.patch_force(flag);
+  const auto force = [&]() { return fluid.patch_force(cylinder) + fluid.patch_force(flag); };
+  if (dt == 0)
+    n_steps = fluid.solve_steady();
+  else
+    for (unsigned int k = 1; k <= n_steps; ++k)
+    {
+      fluid.solve_time_step();
+      if (k % interval == 0 && history != nullptr)
+      {
+        const Tensor<1, dim> f = force();
+        history->push_back(std::array<double, 3>{{fluid.time(), f[0], f[1]}});
+        const double courant = fluid.courant_number(); // collective
+        if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+          std::cout << "  fvfsi: t = " << fluid.time() << " s, Courant number "
+                    << courant << std::endl;
+      }
+    }
+  return force();
 }
 
 // @sect3{The main program}
@@ -831,7 +927,7 @@ void run(const unsigned int n)
     {
       pcout << "step-3 PISO, " << (consistent ? "consistent" : "classic")
             << " Rhie-Chow flux, n = " << n << ":" << std::endl;
-      CylinderFlow flow(n, alpha, consistent);
+      CylinderFlow flow(n, 0.2, alpha, consistent);
       flow.run();
       n_cells = flow.n_cells();
       if (consistent && alpha == 0.95)
@@ -840,11 +936,34 @@ void run(const unsigned int n)
     }
   pcout << "fvfsi::FluidSolver, n = " << n << ":" << std::endl;
   unsigned int n_steps = 0;
-  const Tensor<1, dim> f = library_force(n, 0.95, n_steps);
+  const Tensor<1, dim> f = library_force(n, 0.2, 0.95, 0.0, n_steps);
   pcout << "  steady after " << n_steps << " PISO steps: drag " << f[0] << " N/m, lift " << f[1]
         << " N/m" << std::endl;
   table << row("fvfsi::FluidSolver", 0.95, f, first);
   table << row("Turek-Hron CFD1", 0, Tensor<1, dim>({14.29, 1.119}), first);
+
+  // Re = 100 (U = 1 m/s), time accurate: the fluid at rest, the inflow switched on at t = 0, and
+  // 20 PISO steps of dt = 5 ms (max Courant number dt sum_f |F_f| / (2 V_P) 0.8 to 0.9). In the first steps the
+  // pressure accelerates the whole channel at once (the drag is large); then the boundary layers
+  // and the wake grow. Written-out and library solver side by side.
+  const double dt = 0.005;
+  const unsigned int n_time_steps = 20, interval = 5;
+  std::vector<std::array<double, 3>> history, library_history;
+  pcout << "step-3 PISO, Re = 100, transient:" << std::endl;
+  CylinderFlow transient(n, 1.0, 0.95, true, dt);
+  transient.run(n_time_steps, interval, &history);
+  unsigned int n_library_steps = n_time_steps;
+  library_force(n, 1.0, 0.95, dt, n_library_steps, interval, &library_history);
+  table << "\nRe = 100 from rest, BDF2, dt = " << dt << " s\n"
+        << "t [s]     step-3: drag [N/m] lift [N/m]  fvfsi::FluidSolver: drag [N/m] lift [N/m]\n";
+  for (unsigned int i = 0; i < history.size(); ++i)
+  {
+    char line[160];
+    std::snprintf(line, sizeof(line), "%5.3f %18.5g %10.5g %31.5g %10.5g\n", history[i][0],
+                  history[i][1], history[i][2], library_history[i][1], library_history[i][2]);
+    table << line;
+  }
+
   if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
   {
     const std::string text = "Re = 20, " + std::to_string(n_cells) + " cells\n" + table.str();
