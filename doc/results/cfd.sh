@@ -2,7 +2,7 @@
 # Turek-Hron CFD2 (steady, Re = 100) and CFD3 (periodic, Re = 200) with the rigid flag: the
 # tables of doc/results/cfd.md. Every run: one MPI rank, Release build, one run at a time.
 #   CFD2: prm/turek_hron_cfd2.prm with Mesh/Generator arguments n = 16, 24, 32, 48.
-#   CFD3: prm/turek_hron_cfd3.prm with n = 16 and 24 (dt = 0.002 s), and n = 16 with dt = 0.001 s.
+#   CFD3: prm/turek_hron_cfd3.prm (10 s, dt = 0.002 s) with n = 24 and 32 (about 10 and 25 min).
 # Prints markdown table rows (cells, drag, lift, errors against the reference, pseudo or time
 # steps, wall seconds) and writes doc/results/cfd3_forces.png from the CFD3 histories.
 # Usage: doc/results/cfd.sh [BUILD_DIR [cfd2|cfd3 ...]]   (BUILD_DIR must hold a Release fvfsi)
@@ -35,7 +35,7 @@ for section in "${sections[@]}"; do
     cfd3)
       echo "| n | cells | dt [s] | drag mean | amplitude | lift mean | amplitude | frequency [Hz] | Courant | wall [s] |"
       echo "|---|---|---|---|---|---|---|---|---|---|"
-      for case in "16 0.002" "24 0.002" "16 0.001"; do
+      for case in "24 0.002" "32 0.002"; do
         set -- $case
         out=$runs/cfd3_$1_$2
         "$fvfsi" "$repo/prm/turek_hron_cfd3.prm" --set "Mesh/Generator arguments=$1" \
