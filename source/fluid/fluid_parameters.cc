@@ -8,6 +8,18 @@ namespace fvfsi
 {
   using namespace dealii;
 
+  FluidParameters::FluidParameters()
+  {
+    // The momentum matrix is not symmetric (convection): GMRES + ILU. A predictor needs little
+    // accuracy; the pressure equation decides continuity and is solved tighter.
+    momentum_solver.method = "GMRES";
+    momentum_solver.preconditioner = "ILU";
+    momentum_solver.reduction = 1e-3;
+    momentum_solver.absolute_tolerance = 1e-15;
+    pressure_solver.reduction = 1e-6;
+    pressure_solver.absolute_tolerance = 1e-15;
+  }
+
   void FluidParameters::declare(ParameterHandler& prm)
   {
     prm.enter_subsection("Fluid");
@@ -73,13 +85,7 @@ namespace fvfsi
     prm.add_parameter("Symmetry", symmetry, "Symmetry-plane (slip) patches, comma separated.");
     prm.leave_subsection();
 
-    momentum_solver.method = "GMRES";
-    momentum_solver.preconditioner = "ILU";
-    momentum_solver.reduction = 1e-3;
-    momentum_solver.absolute_tolerance = 1e-15;
     momentum_solver.declare(prm, "Fluid momentum solver");
-    pressure_solver.reduction = 1e-6;
-    pressure_solver.absolute_tolerance = 1e-15;
     pressure_solver.declare(prm, "Fluid pressure solver");
   }
 

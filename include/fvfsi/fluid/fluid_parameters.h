@@ -28,6 +28,8 @@ namespace fvfsi
 
   struct FluidParameters
   {
+    FluidParameters();
+
     double rho = 1000; ///< density [kg/m^3]
     double nu = 1e-3;  ///< kinematic viscosity [m^2/s]
     std::string body_force = "0; 0";       ///< g [m/s^2], vector expression of x, y[, z], t
