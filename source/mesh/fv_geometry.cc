@@ -2,6 +2,8 @@
 
 #include <fvfsi/mesh/fv_geometry.h>
 
+#include "face_pieces.h"
+
 #include <algorithm>
 
 namespace fvfsi
@@ -10,7 +12,8 @@ namespace fvfsi
 
   namespace
   {
-    constexpr double third = 1.0 / 3.0;
+    using internal::decompose;
+    constexpr double third = internal::third;
 
     /// Vertex indices of face f of a cell in cyclic order (deal.II numbers face vertices
     /// lexicographically; (0, 1, 3, 2) walks a quad's boundary).
@@ -24,41 +27,6 @@ namespace fvfsi
       for (unsigned int i = 0; i < nv; ++i)
         polygon[i] = cell_vertices[GeometryInfo<dim>::face_to_cell_vertices(f, dim == 2 ? i : cyclic[i])];
       return polygon;
-    }
-
-    /// The pieces of a face the geometry is built from: segments (2D) or triangles (c, p_i, p_i+1)
-    /// about the vertex average c (3D, Appendix A). Each has an area vector and a centroid.
-    template <int dim>
-    struct FacePieces
-    {
-      static constexpr unsigned int n = dim == 2 ? 1 : 4;
-      std::array<Tensor<1, dim>, n> S;
-      std::array<Point<dim>, n> r;
-    };
-
-    template <int dim, typename Polygon>
-    FacePieces<dim> decompose(const Polygon& polygon, const std::vector<Point<dim>>& x)
-    {
-      FacePieces<dim> pieces;
-      if constexpr (dim == 2)
-      {
-        const Tensor<1, 2> t = x[polygon[1]] - x[polygon[0]];
-        pieces.S[0] = Tensor<1, 2>({t[1], -t[0]});
-        pieces.r[0] = Point<2>((x[polygon[0]] + x[polygon[1]]) / 2);
-      }
-      else
-      {
-        Point<dim> c;
-        for (const unsigned int v : polygon)
-          c += x[v] / double(polygon.size());
-        for (unsigned int i = 0; i < 4; ++i)
-        {
-          const Point<dim>&a = x[polygon[i]], &b = x[polygon[(i + 1) % 4]];
-          pieces.S[i] = 0.5 * cross_product_3d(a - c, b - c);
-          pieces.r[i] = Point<dim>((c + a + b) * third);
-        }
-      }
-      return pieces;
     }
 
     /// Reverse `polygon` if its area vector points into the cell whose vertex average is `apex`,
