@@ -72,10 +72,12 @@ namespace fvfsi
       b_trilinos.trilinos_vector()[0][i] = b.local_element(i);
     }
     // Stop at `reduction` times the initial residual, or at the absolute tolerance; never ask
-    // for less than round-off of the right-hand side (Krylov methods stall there).
+    // for less than round-off of the right-hand side or of A x (Krylov methods stall there, and
+    // preconditioned CG started from round-off noise can break down into NaN).
     TrilinosWrappers::MPI::Vector r(b_trilinos);
     const double r0 = matrix.residual(r, x_trilinos, b_trilinos);
-    const double round_off = 1e-13 * b_trilinos.l2_norm();
+    const double round_off =
+      1e-13 * std::max(b_trilinos.l2_norm(), matrix.linfty_norm() * x_trilinos.l2_norm());
     SolverControl control(parameters.max_iterations,
                           std::max({parameters.absolute_tolerance, parameters.reduction * r0, round_off}),
                           false, false);
