@@ -1,0 +1,117 @@
+#pragma once
+// Mesh motion for the ALE fluid: where the vertices of the fluid mesh are at time t.
+//
+//  - `prescribed`: every vertex moves by a given displacement d(X, t) of its reference position X
+//    (tests, forced motions);
+//  - `Laplace`: the moving patches have a given displacement d(X, t) (an expression or, for
+//    fluid-structure interaction, values set from outside per boundary vertex), every other
+//    boundary is fixed, and the interior follows the Laplace equation div(gamma grad d) = 0 with a
+//    variable diffusivity that stiffens the mesh near the moving patches,
+//      gamma_f = 1 / max(r_f, r_min)^2   (quadratic inverse distance, r_f from the face centre to
+//                                         the nearest moving-patch face centre, r_min a cell size),
+//    so that the small cells there move almost rigidly and the large ones far away absorb the
+//    deformation. It is discretised on the cells by the same FV Laplacian as everything else
+//    (Eq. 19 with deferred non-orthogonal correction), on the reference (undeformed) mesh: the
+//    matrix never changes and its AMG preconditioner is built once. The cell displacements are
+//    carried to the vertices by the least-squares reconstruction of Appendix B; boundary vertices
+//    take their prescribed displacement exactly (a vertex shared by a moving and a fixed patch
+//    follows the moving one).
+//
+// The class knows nothing about the fluid: it returns vertex positions, which a driver passes to
+// FVGeometry::swept_volumes, FVGeometry::reinit and FluidSolver::move_mesh.
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <fvfsi/fv/cell_gradient.h>
+#include <fvfsi/fv/laplacian.h>
+#include <fvfsi/fv/linear_solver.h>
+#include <fvfsi/fv/vertex_interpolation.h>
+#include <fvfsi/mesh/fv_geometry.h>
+#include <fvfsi/mesh/mesh_parameters.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fvfsi
+{
+  struct MeshMotionParameters
+  {
+    std::string type = "none"; ///< none | prescribed | Laplace
+    /// prescribed: dim expressions of the reference position x, y[, z] and t [m].
+    std::string displacement = "";
+    /// Laplace: `patch: expressions | patch: expressions`, the displacement of moving patches.
+    std::string moving_patches = "";
+    /// Laplace: `quadratic inverse distance` or `uniform`.
+    std::string diffusivity = "quadratic inverse distance";
+    unsigned int non_orthogonal_correctors = 2;
+    LinearSolverParameters solver;
+
+    MeshMotionParameters();
+    void declare(dealii::ParameterHandler& prm);
+    bool moves() const { return type != "none"; }
+  };
+
+  template <int dim>
+  class MeshMotion
+  {
+  public:
+    /// `reference` is a geometry of the undeformed mesh that is never moved.
+    MeshMotion(const FVGeometry<dim>& reference, const MeshParameters& mesh_parameters,
+               const MeshMotionParameters& parameters);
+
+    /// Laplace: set the displacement [m] of the vertices of a moving patch from outside (e.g. the
+    /// solid's interface displacement), replacing the patch's expression. Indexed like the
+    /// triangulation's vertices; only the patch's vertices are read.
+    void set_patch_displacement(const std::string& patch,
+                                const std::vector<dealii::Tensor<1, dim>>& vertex_displacement);
+
+    /// The vertex positions at time t (indexed like the triangulation's vertices; vertices of no
+    /// locally relevant cell stay where they are).
+    std::vector<dealii::Point<dim>> vertex_positions(double t);
+
+    /// Linear iterations of the last Laplace solve (all components and corrections).
+    unsigned int last_linear_iterations() const { return linear_iterations; }
+
+  private:
+    void setup_patches(const MeshParameters& mesh_parameters);
+    void compute_diffusivity();
+    void boundary_vertex_displacements(double t);
+    void solve_laplace();
+
+    const FVGeometry<dim>& reference;
+    MeshMotionParameters prm;
+    std::unique_ptr<dealii::FunctionParser<dim>> prescribed;
+
+    // Laplace.
+    struct MovingPatch
+    {
+      unsigned int id;
+      std::unique_ptr<dealii::FunctionParser<dim>> expression; ///< null when set from outside
+      std::vector<dealii::Tensor<1, dim>> given;               ///< per vertex, when set from outside
+    };
+    std::vector<MovingPatch> moving;
+    Laplacian<dim> laplacian;
+    VertexInterpolation<dim> vertex_interpolation;
+    LinearSolver solver;
+    dealii::TrilinosWrappers::SparseMatrix matrix;
+    CellVector rhs_boundary; ///< the Dirichlet sources of the assembled matrix, per unit value
+    FaceVector gamma;
+    ScalarBoundaryConditions<dim> bc;
+    std::array<CellVector, dim> d_cell;                ///< cell displacements (last solve)
+    std::array<CellGradient<dim>, dim> grad_d;
+    std::vector<dealii::Tensor<1, dim>> d_vertex;      ///< vertex displacements
+    std::vector<int> boundary_vertex;                  ///< -1 interior, else 0 fixed / 1 moving
+    // Vertex values of ghost cells whose vertices no owned cell shares come from their owner,
+    // through the vertex dofs of an FE_Q(1)^dim DoFHandler (a ghosted vector).
+    dealii::DoFHandler<dim> vertex_dofs;
+    std::vector<std::array<dealii::types::global_dof_index, dim>> vertex_dof; ///< per vertex
+    dealii::LinearAlgebra::distributed::Vector<double> vertex_vector;
+    void exchange_vertex_displacements();
+    unsigned int linear_iterations = 0;
+  };
+} // namespace fvfsi

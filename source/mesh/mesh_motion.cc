@@ -1,0 +1,270 @@
+// MeshMotion: prescribed and Laplace mesh motion of the ALE fluid (see mesh_motion.h).
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/numerics/rtree.h>
+
+#include <fvfsi/apps/poisson.h> // initialize_function
+#include <fvfsi/fv/gradients.h>
+#include <fvfsi/mesh/mesh_motion.h>
+
+#include <stdexcept>
+
+namespace fvfsi
+{
+  using namespace dealii;
+
+  MeshMotionParameters::MeshMotionParameters()
+  {
+    solver.method = "CG";
+    solver.preconditioner = "AMG";
+    solver.reduction = 1e-8;
+  }
+
+  void MeshMotionParameters::declare(ParameterHandler& prm)
+  {
+    prm.enter_subsection("Mesh motion");
+    prm.add_parameter("Type", type,
+                      "none: a fixed mesh; prescribed: every vertex moves by `Displacement`; "
+                      "Laplace: the `Moving patches` move as given, the other boundaries are fixed, "
+                      "the interior follows a Laplace equation with variable diffusivity.",
+                      Patterns::Selection("none|prescribed|Laplace"));
+    prm.add_parameter("Displacement", displacement,
+                      "prescribed: d(X, t) [m] of a vertex at reference position X, dim expressions "
+                      "of x, y[, z], t separated by `;`.");
+    prm.add_parameter("Moving patches", moving_patches,
+                      "Laplace: `patch: expressions | patch: expressions`, d(X, t) [m] of the "
+                      "vertices of each moving patch (dim expressions of x, y[, z], t separated by "
+                      "`;`).");
+    prm.add_parameter("Diffusivity", diffusivity,
+                      "Laplace: gamma_f = 1 / max(r_f, d_fn)^2 with r_f the distance of the face "
+                      "centre from the nearest moving-patch face (quadratic inverse distance), or 1 "
+                      "(uniform).",
+                      Patterns::Selection("quadratic inverse distance|uniform"));
+    prm.add_parameter("Non-orthogonal correctors", non_orthogonal_correctors,
+                      "Laplace: deferred-correction solves of Eq. 19's non-orthogonal part per "
+                      "motion.",
+                      Patterns::Integer(0, 100));
+    prm.leave_subsection();
+    solver.declare(prm, "Mesh motion solver");
+  }
+
+  template <int dim>
+  MeshMotion<dim>::MeshMotion(const FVGeometry<dim>& reference, const MeshParameters& mesh_parameters,
+                              const MeshMotionParameters& parameters)
+    : reference(reference)
+    , prm(parameters)
+    , laplacian(reference)
+    , vertex_interpolation(reference)
+    , solver(parameters.solver)
+    , vertex_dofs(reference.triangulation())
+  {
+    if (prm.type == "prescribed")
+    {
+      prescribed = std::make_unique<FunctionParser<dim>>(dim);
+      initialize_function(*prescribed, prm.displacement, "Mesh motion/Displacement");
+    }
+    else if (prm.type == "Laplace")
+    {
+      setup_patches(mesh_parameters);
+      compute_diffusivity();
+      laplacian.reinit_matrix(matrix);
+      CellVector unused = reference.make_cell_vector();
+      laplacian.assemble(gamma, bc, matrix, unused);
+      matrix.compress(VectorOperation::add);
+      solver.initialize(matrix); // the matrix never changes: one AMG set-up for the whole run
+      for (unsigned int j = 0; j < dim; ++j)
+      {
+        d_cell[j] = reference.make_cell_vector();
+        grad_d[j] = CellGradient<dim>(reference);
+      }
+      rhs_boundary = reference.make_cell_vector();
+
+      const FESystem<dim> q1(FE_Q<dim>(1), dim);
+      vertex_dofs.distribute_dofs(q1);
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(vertex_dofs, relevant);
+      vertex_vector.reinit(vertex_dofs.locally_owned_dofs(), relevant, reference.comm());
+      vertex_dof.resize(reference.vertices().size());
+      for (const auto& cell : vertex_dofs.active_cell_iterators())
+        if (!cell->is_artificial())
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int j = 0; j < dim; ++j)
+              vertex_dof[cell->vertex_index(v)][j] = cell->vertex_dof_index(v, j);
+    }
+    else if (prm.type != "none")
+      throw std::runtime_error("Mesh motion/Type: unknown type `" + prm.type + "`");
+    d_vertex.assign(reference.vertices().size(), Tensor<1, dim>());
+  }
+
+  template <int dim>
+  void MeshMotion<dim>::setup_patches(const MeshParameters& mesh_parameters)
+  {
+    for (const auto& item : Utilities::split_string_list(prm.moving_patches, '|'))
+    {
+      const auto colon = item.find(':');
+      if (colon == std::string::npos)
+        throw std::runtime_error("Mesh motion/Moving patches: `" + item +
+                                 "` is not `patch: expressions`");
+      MovingPatch patch;
+      patch.id = mesh_parameters.patch_id(Utilities::trim(item.substr(0, colon)));
+      patch.expression = std::make_unique<FunctionParser<dim>>(dim);
+      initialize_function(*patch.expression, Utilities::trim(item.substr(colon + 1)),
+                          "Mesh motion/Moving patches");
+      moving.push_back(std::move(patch));
+    }
+    if (moving.empty())
+      throw std::runtime_error("Mesh motion/Moving patches: Type = Laplace needs at least one patch");
+    // Every boundary is Dirichlet: the moving patches' displacement, zero elsewhere.
+    boundary_vertex.assign(reference.vertices().size(), -1);
+    for (const auto& face : reference.faces)
+      if (face.N == invalid_cell)
+      {
+        bc.patch_type[face.patch] = BoundaryType::dirichlet;
+        bool is_moving = false;
+        for (const auto& patch : moving)
+          is_moving = is_moving || patch.id == face.patch;
+        for (const unsigned int v : face.vertices)
+          boundary_vertex[v] = std::max(boundary_vertex[v], is_moving ? 1 : 0);
+      }
+    bc.value.assign(reference.faces.size(), 0.0);
+  }
+
+  template <int dim>
+  void MeshMotion<dim>::compute_diffusivity()
+  {
+    gamma.assign(reference.faces.size(), 1.0);
+    if (prm.diffusivity == "uniform")
+      return;
+    // Centres of all moving-patch faces, from every rank, in an R-tree for nearest queries.
+    std::vector<Point<dim>> local;
+    for (const auto& face : reference.faces)
+      if (face.kind == FaceKind::boundary)
+        for (const auto& patch : moving)
+          if (patch.id == face.patch)
+            local.push_back(face.centre);
+    std::vector<Point<dim>> centres;
+    for (const auto& part : Utilities::MPI::all_gather(reference.comm(), local))
+      centres.insert(centres.end(), part.begin(), part.end());
+    const auto tree = pack_rtree(centres);
+    for (unsigned int f = 0; f < reference.faces.size(); ++f)
+    {
+      const auto& face = reference.faces[f];
+      std::vector<Point<dim>> nearest;
+      tree.query(boost::geometry::index::nearest(face.centre, 1), std::back_inserter(nearest));
+      const double r = std::max(face.centre.distance(nearest[0]), face.d_n);
+      gamma[f] = 1 / (r * r);
+    }
+  }
+
+  template <int dim>
+  void MeshMotion<dim>::set_patch_displacement(const std::string& patch_name,
+                                               const std::vector<Tensor<1, dim>>& displacement)
+  {
+    (void)patch_name;
+    (void)displacement;
+    throw std::runtime_error("MeshMotion::set_patch_displacement: not implemented yet");
+  }
+
+  template <int dim>
+  void MeshMotion<dim>::boundary_vertex_displacements(const double t)
+  {
+    // Moving vertices from their patch's expression; fixed boundary vertices stay.
+    const auto& X = reference.vertices();
+    for (auto& patch : moving)
+      patch.expression->set_time(t);
+    for (const auto& face : reference.faces)
+      if (face.N == invalid_cell)
+        for (const auto& patch : moving)
+          if (patch.id == face.patch)
+            for (const unsigned int v : face.vertices)
+              for (unsigned int j = 0; j < dim; ++j)
+                d_vertex[v][j] = patch.expression->value(X[v], j);
+    for (unsigned int v = 0; v < d_vertex.size(); ++v)
+      if (boundary_vertex[v] == 0)
+        d_vertex[v] = Tensor<1, dim>();
+  }
+
+  template <int dim>
+  void MeshMotion<dim>::solve_laplace()
+  {
+    // Per component: Dirichlet values on the boundary faces (the average of their vertices'),
+    // deferred non-orthogonal corrections, then the vertex values by least squares (App. B).
+    linear_iterations = 0;
+    std::vector<double> vertex_values(d_vertex.size());
+    CellVector rhs = reference.make_cell_vector();
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      rhs_boundary = 0;
+      for (unsigned int f = 0; f < reference.faces.size(); ++f)
+      {
+        const auto& face = reference.faces[f];
+        if (face.N != invalid_cell)
+          continue;
+        double value = 0;
+        for (const unsigned int v : face.vertices)
+          value += d_vertex[v][j] / face.vertices.size();
+        bc.value[f] = value;
+        if (face.kind == FaceKind::boundary) // Eq. 23, as Laplacian::assemble adds it
+          rhs_boundary.local_element(face.P) += gamma[f] * face.area / face.d_n * value;
+      }
+      for (unsigned int k = 0; k <= prm.non_orthogonal_correctors; ++k)
+      {
+        rhs = rhs_boundary;
+        laplacian.add_correction(gamma, bc, grad_d[j], rhs);
+        linear_iterations += solver.solve(matrix, d_cell[j], rhs, "mesh motion, component " + std::to_string(j));
+        vertex_interpolation.interpolate(d_cell[j], bc.value, vertex_values);
+        gauss_green_gradient(reference, vertex_values, grad_d[j]);
+      }
+      for (const unsigned int v : vertex_interpolation.vertices())
+        if (boundary_vertex[v] < 0)
+          d_vertex[v][j] = vertex_values[v];
+    }
+    exchange_vertex_displacements();
+  }
+
+  template <int dim>
+  void MeshMotion<dim>::exchange_vertex_displacements()
+  {
+    // Every rank computed the same values for the vertices its owned cells share (App. B stencils
+    // lie in the ghost layer); the owner of each vertex dof sends its value to the ghosts.
+    const IndexSet& owned = vertex_dofs.locally_owned_dofs();
+    for (const unsigned int v : vertex_interpolation.vertices())
+      for (unsigned int j = 0; j < dim; ++j)
+        if (owned.is_element(vertex_dof[v][j]))
+          vertex_vector[vertex_dof[v][j]] = d_vertex[v][j];
+    vertex_vector.update_ghost_values();
+    for (const auto& cell : vertex_dofs.active_cell_iterators())
+      if (cell->is_ghost())
+        for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int j = 0; j < dim; ++j)
+            d_vertex[cell->vertex_index(v)][j] = vertex_vector[vertex_dof[cell->vertex_index(v)][j]];
+  }
+
+  template <int dim>
+  std::vector<Point<dim>> MeshMotion<dim>::vertex_positions(const double t)
+  {
+    std::vector<Point<dim>> x = reference.vertices();
+    if (prm.type == "prescribed")
+    {
+      prescribed->set_time(t);
+      for (unsigned int v = 0; v < x.size(); ++v)
+        for (unsigned int j = 0; j < dim; ++j)
+          x[v][j] += prescribed->value(reference.vertices()[v], j);
+      return x;
+    }
+    if (prm.type == "Laplace")
+    {
+      boundary_vertex_displacements(t);
+      solve_laplace();
+      for (unsigned int v = 0; v < x.size(); ++v)
+        x[v] += d_vertex[v];
+    }
+    return x;
+  }
+
+  template class MeshMotion<2>;
+  template class MeshMotion<3>;
+} // namespace fvfsi
