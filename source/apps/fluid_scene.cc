@@ -10,6 +10,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <stdexcept>
 
 namespace fvfsi
@@ -36,6 +37,7 @@ namespace fvfsi
     prm.add_parameter("Progress interval", progress_interval,
                       "Print a progress line every this many time steps.", Patterns::Integer(1));
     prm.leave_subsection();
+    mesh_motion.declare(prm);
   }
 
   PeriodicStatistics periodic_statistics(const std::vector<double>& t, const std::vector<double>& q)
@@ -78,6 +80,40 @@ namespace fvfsi
     make_mesh(mesh_parameters, triangulation, prm_directory);
     fv = std::make_unique<FVGeometry<dim>>(triangulation);
     fluid = std::make_unique<FluidSolver<dim>>(*fv, mesh_parameters, fluid_parameters);
+    if (scene_parameters.mesh_motion.moves())
+    {
+      if (!fluid_parameters.transient)
+        throw std::runtime_error("Mesh motion/Type = " + scene_parameters.mesh_motion.type +
+                                 " needs a transient flow (Fluid/Transient = true)");
+      reference_fv = std::make_unique<FVGeometry<dim>>(triangulation);
+      motion = std::make_unique<MeshMotion<dim>>(*reference_fv, mesh_parameters,
+                                                 scene_parameters.mesh_motion);
+    }
+  }
+
+  template <int dim>
+  void FluidScene<dim>::move_mesh()
+  {
+    const std::vector<Point<dim>> x = motion->vertex_positions(fluid->time() + fluid_parameters.time_step);
+    const std::vector<double> swept = fv->swept_volumes(x);
+    fv->reinit(x);
+    for (const auto& cell : triangulation.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int v : cell->vertex_indices())
+          cell->vertex(v) = x[cell->vertex_index(v)];
+    // Mesh quality: the smallest V_P / V_P(reference); <= 0 is an inverted cell.
+    double min_ratio = std::numeric_limits<double>::max();
+    for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
+      min_ratio = std::min(min_ratio, fv->cell_volume[c] / reference_fv->cell_volume[c]);
+    min_ratio = Utilities::MPI::min(min_ratio, comm);
+    result.min_volume_ratio = std::min(result.min_volume_ratio, min_ratio);
+    if (!(min_ratio > 0))
+      throw std::runtime_error("Mesh motion: a cell is inverted (volume <= 0) at t = " +
+                               Utilities::to_string(fluid->time() + fluid_parameters.time_step) +
+                               " s; the displacement is too large for this mesh (try Mesh "
+                               "motion/Diffusivity = quadratic inverse distance, or a finer mesh "
+                               "near the moving patches)");
+    fluid->move_mesh(swept);
   }
 
   template <int dim>
@@ -198,7 +234,9 @@ namespace fvfsi
     make_grid();
     pcout << "fvfsi: fluid " << dim << "D, " << fv->n_global_cells() << " cells, "
           << (fluid_parameters.transient ? "transient (PISO, BDF2)" : "steady (pseudo-transient)")
-          << ", convection " << fluid_parameters.convection << "\n";
+          << ", convection " << fluid_parameters.convection
+          << (motion ? ", moving mesh (" + scene_parameters.mesh_motion.type + ")" : std::string())
+          << "\n";
     if (!fluid_parameters.transient)
     {
       result.n_time_steps = fluid->solve_steady();
@@ -213,6 +251,8 @@ namespace fvfsi
       {
         try
         {
+          if (motion)
+            move_mesh();
           fluid->solve_time_step();
         }
         catch (...)
@@ -226,7 +266,10 @@ namespace fvfsi
         if (step % scene_parameters.progress_interval == 0 || step == total)
           pcout << "fvfsi: fluid step " << step << "/" << total << ", t = " << fluid->time()
                 << " s, Courant " << fluid->courant_number() << ", drag " << history_drag.back()
-                << ", lift " << history_lift.back() << "\n";
+                << ", lift " << history_lift.back()
+                << (motion ? ", min V/V_ref " + std::to_string(result.min_volume_ratio)
+                           : std::string())
+                << "\n";
         if (scene_parameters.output_interval > 0 && step % scene_parameters.output_interval == 0)
           output_results();
       }
@@ -248,6 +291,8 @@ namespace fvfsi
       summary.set_result("drag", history_drag.back());
       summary.set_result("lift", history_lift.back());
     }
+    if (motion)
+      summary.set_result("min_cell_volume_ratio", result.min_volume_ratio);
     if (result.max_velocity_error >= 0)
     {
       summary.set_result("max_velocity_error", result.max_velocity_error);

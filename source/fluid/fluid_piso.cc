@@ -31,6 +31,11 @@ namespace fvfsi
       const double phi = F[f] - F_mesh[f];            // flux relative to the moving face
       const double a_diffusion = prm.nu * face.area / face.d_n; // Eq. 27
       const unsigned int P = face.P;
+      // + u_P sum_f F^mesh_f: with the time term's c0_P (see fluid_solver.h) the spatial rows
+      // then sum to sum_f F_f. Zero on a fixed mesh.
+      momentum.diagonal[P] += F_mesh[f];
+      if (face.kind == FaceKind::interior)
+        momentum.diagonal[face.N] -= F_mesh[f];
       if (face.N != invalid_cell)
       {
         // Viscous term: orthogonal part of Eq. 19 implicit. Convection: upwind implicit,
@@ -76,19 +81,22 @@ namespace fvfsi
     for (unsigned int j = 0; j < dim; ++j)
       laplacian.add_correction(nu_f, velocity_bc, grad_u[j], B_rest[j]);
 
-    // Time derivative (backward Euler / BDF2) and body force. Steady: a local pseudo time step,
-    // c0_P = a*_P (1 - alpha) / alpha from the spatial coefficient a*_P assembled above.
+    // Time derivative of V u (backward Euler / BDF2) and body force: c0_P = c1 V^o/V - c2 V^oo/V
+    // (= c0 on a fixed mesh). Steady: a local pseudo time step, c0_P = a*_P (1 - alpha) / alpha
+    // from the spatial coefficient a*_P assembled above.
+    (void)c0;
     const double alpha = prm.momentum_relaxation;
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
     {
       const double V = geometry.cell_volume[c];
-      c0_cell[c] = prm.transient ? c0 : momentum.diagonal[c] / V * (1 - alpha) / alpha;
-      const double c1_P = prm.transient ? c1 : c0_cell[c];
+      c0_cell[c] = prm.transient ? (c1 * V_old[c] - c2 * V_old2[c]) / V
+                                 : momentum.diagonal[c] / V * (1 - alpha) / alpha;
+      const double c1V = prm.transient ? c1 * V_old[c] : c0_cell[c] * V;
       momentum.diagonal[c] += c0_cell[c] * V;
       for (unsigned int j = 0; j < dim; ++j)
       {
-        B_time[j][c] = V * (c1_P * u_old.components[j].local_element(c) -
-                            c2 * u_old2.components[j].local_element(c));
+        B_time[j][c] = c1V * u_old.components[j].local_element(c) -
+                       c2 * V_old2[c] * u_old2.components[j].local_element(c);
         B_rest[j].local_element(c) += V * body_force.value(geometry.centroid[c], j);
       }
     }
@@ -144,8 +152,7 @@ namespace fvfsi
     // Gamma_f as in the flux correction, so that the corrected fluxes satisfy continuity.
     double c0, c1, c2;
     time_coefficients(c0, c1, c2);
-    (void)c1;
-    (void)c2;
+    (void)c0;
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
     {
       a.local_element(c) = momentum.diagonal[c] / geometry.cell_volume[c];
@@ -169,8 +176,10 @@ namespace fvfsi
           ? 1 / a_star.local_element(face.P)
           : face.w / a_star.local_element(face.P) + (1 - face.w) / a_star.local_element(face.N);
       a_star_f[f] = 1 / inverse_a_star;
-      c0_face[f] = prm.transient ? c0 : a_star_f[f] * (1 - prm.momentum_relaxation) /
-                                          prm.momentum_relaxation;
+      const auto r = volume_ratios(f);
+      c0_face[f] = prm.transient ? c1 * r[0] - c2 * r[1]
+                                 : a_star_f[f] * (1 - prm.momentum_relaxation) /
+                                     prm.momentum_relaxation;
       gamma_p[f] = 1 / (c0_face[f] + a_star_f[f]);
       const double coefficient = gamma_p[f] * face.area / face.d_n;
       if (face.N == invalid_cell)
@@ -236,8 +245,15 @@ namespace fvfsi
       }
       for (unsigned int j = 0; j < dim; ++j)
         h_by_a[j] += m * grad[j]; // skewness correction
-      const double c1_f = prm.transient ? c1 : c0_face[f];
-      F_star[f] = gamma_p[f] * (c1_f * F_old[f] - c2 * F_old2[f] + a_star_f[f] * (face.S * h_by_a));
+      // Old fluxes carried to the new face: F^o + u^o_f . (S_f - S_f^o) (exactly F^o on a fixed
+      // mesh), weighted by the volume ratios r1_f, r2_f.
+      const Tensor<1, dim> u_o = N == invalid_cell ? u_old[P] : face.w * u_old[P] + (1 - face.w) * u_old[N];
+      const Tensor<1, dim> u_oo = N == invalid_cell ? u_old2[P] : face.w * u_old2[P] + (1 - face.w) * u_old2[N];
+      const double F_o = F_old[f] + u_o * (face.S - S_old[f]);
+      const double F_oo = F_old2[f] + u_oo * (face.S - S_old2[f]);
+      const auto r = volume_ratios(f);
+      const double c1_f = prm.transient ? c1 * r[0] : c0_face[f];
+      F_star[f] = gamma_p[f] * (c1_f * F_o - c2 * r[1] * F_oo + a_star_f[f] * (face.S * h_by_a));
     }
   }
 

@@ -51,8 +51,17 @@ namespace fvfsi
     a_star = geometry.make_cell_vector();
     pressure_rhs = geometry.make_cell_vector();
     const unsigned int n_faces = geometry.faces.size();
-    for (auto* field : {&F, &F_old, &F_old2, &F_mesh, &F_star, &gamma_p, &a_star_f, &boundary_p})
+    for (auto* field : {&F, &F_old, &F_old2, &F_mesh, &F_star, &gamma_p, &a_star_f, &boundary_p,
+                        &swept, &swept_old})
       field->assign(n_faces, 0.0);
+    V_old = V_old2 = geometry.cell_volume;
+    for (const auto& face : geometry.faces)
+    {
+      S_old.push_back(face.S);
+      r_f_old.push_back(face.centre);
+    }
+    S_old2 = S_old;
+    r_f_old2 = r_f_old;
     boundary_u.assign(n_faces, Tensor<1, dim>());
     c0_cell.assign(geometry.n_owned_cells(), 0.0);
     c0_face.assign(n_faces, 0.0);
@@ -151,9 +160,15 @@ namespace fvfsi
             boundary_u[f][j] = functions[face_condition[f].expression]->value(face.centre, j);
           break;
         case Type::wall:
-          // The wall moves with the mesh: its velocity is the swept volume rate per area.
-          boundary_u[f] = (F_mesh[f] / face.area) * face.n;
+        {
+          // The wall moves with the mesh: the tangential part of its face centre's velocity, the
+          // normal part from the swept volume (so that S_f . u_b = F_f^mesh exactly).
+          double c0, c1, c2;
+          time_coefficients(c0, c1, c2);
+          const Tensor<1, dim> v_f = c0 * face.centre - c1 * r_f_old[f] + c2 * r_f_old2[f];
+          boundary_u[f] = v_f - (v_f * face.n) * face.n + (F_mesh[f] / face.area) * face.n;
           break;
+        }
         case Type::outlet:
           boundary_u[f] = extrapolated;
           break;
@@ -233,8 +248,57 @@ namespace fvfsi
   {
     u_old2 = u_old;
     u_old = u;
+    u_old.update_ghost_values();
+    u_old2.update_ghost_values();
     F_old2 = F_old;
     F_old = F;
+    V_old2 = V_old;
+    V_old = geometry.cell_volume;
+    swept_old = swept;
+    std::fill(swept.begin(), swept.end(), 0.0);
+    S_old2 = S_old;
+    r_f_old2 = r_f_old;
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      S_old[f] = geometry.faces[f].S;
+      r_f_old[f] = geometry.faces[f].centre;
+    }
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::move_mesh(const std::vector<double>& swept_volume)
+  {
+    if (!prm.transient)
+      throw std::runtime_error("Fluid: the mesh can only move in a transient run (Fluid/Transient)");
+    AssertDimension(swept_volume.size(), geometry.faces.size());
+    swept = swept_volume;
+    vertex_interpolation.reinit(); // its least-squares weights depend on the geometry
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::compute_mesh_fluxes()
+  {
+    // BDF2 form of the SCL: F^mesh = c0 dV^n - c2 dV^(n-1), whose sum over a cell's faces is
+    // c0 (V - V^o) - c2 (V^o - V^oo) = c0 V - c1 V^o + c2 V^oo (c1 = c0 + c2).
+    double c0, c1, c2;
+    time_coefficients(c0, c1, c2);
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+      F_mesh[f] = prm.transient ? c0 * swept[f] - c2 * swept_old[f] : 0.0;
+  }
+
+  template <int dim>
+  std::array<double, 2> FluidSolver<dim>::volume_ratios(const unsigned int f) const
+  {
+    const auto& face = geometry.faces[f];
+    const auto ratios = [this](const unsigned int c) {
+      const double V = geometry.cell_volume[c];
+      return std::array<double, 2>{{V_old[c] / V, V_old2[c] / V}};
+    };
+    const auto r_P = ratios(face.P);
+    if (face.N == invalid_cell)
+      return r_P;
+    const auto r_N = ratios(face.N);
+    return {{face.w * r_P[0] + (1 - face.w) * r_N[0], face.w * r_P[1] + (1 - face.w) * r_N[1]}};
   }
 
   template <int dim>
@@ -265,13 +329,12 @@ namespace fvfsi
   template <int dim>
   double FluidSolver<dim>::solve_time_step()
   {
-    if (time_step_number > 0)
-      shift_time_levels();
     ++time_step_number;
     current_time += prm.time_step;
     body_force.set_time(current_time);
     for (auto& fn : functions)
       fn->set_time(current_time);
+    compute_mesh_fluxes();
 
     try
     {
@@ -297,6 +360,7 @@ namespace fvfsi
     }
     max_du = Utilities::MPI::max(max_du, geometry.comm());
     max_u = Utilities::MPI::max(max_u, geometry.comm());
+    shift_time_levels();
     return max_du / std::max(max_u, 1e-300);
   }
 

@@ -12,6 +12,7 @@
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/io/summary.h>
 #include <fvfsi/mesh/fv_geometry.h>
+#include <fvfsi/mesh/mesh_motion.h>
 #include <fvfsi/mesh/mesh_parameters.h>
 
 #include <memory>
@@ -33,6 +34,8 @@ namespace fvfsi
     unsigned int output_interval = 0;
     /// Print a progress line every this many time steps.
     unsigned int progress_interval = 100;
+    /// How the mesh moves (subsection `Mesh motion`; default: it does not).
+    MeshMotionParameters mesh_motion;
 
     void declare(dealii::ParameterHandler& prm);
   };
@@ -51,6 +54,8 @@ namespace fvfsi
     double max_velocity_error = -1, max_pressure_error = -1; ///< max over cells [m/s], [Pa]
     double l2_velocity_error = -1, l2_pressure_error = -1;   ///< sqrt(sum_P V_P e_P^2)
     unsigned int n_time_steps = 0; ///< time steps, or pseudo time steps of a steady run
+    /// Moving meshes: min over cells and time steps of V_P / V_P(reference).
+    double min_volume_ratio = 1;
   };
 
   template <int dim>
@@ -71,6 +76,9 @@ namespace fvfsi
 
   private:
     void make_grid();
+    /// Moves the mesh to its position at the coming time step: vertices (also those of the
+    /// triangulation, so that the VTU output shows the moved mesh), geometry, mesh fluxes.
+    void move_mesh();
     void record_time_history();
     void compute_errors();
     void output_results() const;
@@ -84,6 +92,8 @@ namespace fvfsi
     dealii::parallel::distributed::Triangulation<dim> triangulation;
     std::unique_ptr<FVGeometry<dim>> fv;
     std::unique_ptr<FluidSolver<dim>> fluid;
+    std::unique_ptr<FVGeometry<dim>> reference_fv; ///< the undeformed mesh (moving meshes only)
+    std::unique_ptr<MeshMotion<dim>> motion;
 
     std::vector<double> history_t, history_drag, history_lift;
     FluidResults result;

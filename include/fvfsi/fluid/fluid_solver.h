@@ -33,6 +33,23 @@
 // flux second order on meshes whose cell coefficients a*_P jump from cell to cell. Continuity
 // sum_f F_f = 0 is the pressure equation, a Laplacian with Gamma_f = 1 / (c0 + a*_f).
 //
+// Moving meshes (ALE, after Tukovic and Jasak). The driver moves the vertices, recomputes the
+// geometry and hands the solver the volume dV_f each face swept (move_mesh). The mesh flux is
+// F_f^mesh = c0 dV_f^n - c2 dV_f^(n-1) (backward Euler: dV_f^n / dt), so that the space
+// conservation law (Eq. 3) holds exactly in BDF2 form:
+//   c0 V_P - c1 V_P^o + c2 V_P^oo = sum_f F_f^mesh.
+// The time derivative is that of V_P u_P. With the SCL, c0 V_P u_P and the part -u_P sum_f F^mesh_f
+// of the convection term combine to (c1 V_P^o - c2 V_P^oo) u_P, i.e. c0 V_P is replaced by
+//   c0_P V_P,  c0_P = c1 r1_P - c2 r2_P,  r1 = V^o / V, r2 = V^oo / V,
+// and sum_f F^mesh_f is added to the spatial diagonal, whose rows then sum to sum_f F_f (zero for a
+// divergence-free flux): h / a* of a uniform flow is that flow. The Rhie-Chow flux uses the same
+// split, c0_f = c1 r1_f - c2 r2_f with r interpolated linearly, and old fluxes carried to the new
+// face, F^o' = F^o + u^o_f . (S_f - S_f^o):
+//   (c0_f + a*_f) F_f = c1 r1_f F_f^o' - c2 r2_f F_f^oo' + a*_f [ ... as above ... ].
+// A uniform flow then stays uniform whatever the mesh motion (tests/fluid/fluid_scl.cc). A wall
+// moves with the mesh: u_b = (I - n n) v_f + n F_f^mesh / S_f, v_f the BDF2 velocity of the face
+// centre. On a fixed mesh r = 1, F^mesh = 0, and all of this reduces to the formulation above.
+//
 // The solver knows nothing about coupling or mesh motion drivers: it reads the geometry it is
 // given and exposes velocity, pressure, fluxes and patch forces.
 
@@ -69,6 +86,12 @@ namespace fvfsi
     /// the field if a value becomes non-finite.
     double solve_time_step();
 
+    /// The driver has moved the mesh for the coming time step (FVGeometry::reinit) and passes
+    /// the volumes the faces swept, FVGeometry::swept_volumes() of that motion [m^dim]. The next
+    /// solve_time_step() builds the mesh fluxes from them. Transient runs only; a step without a
+    /// call is a step without motion.
+    void move_mesh(const std::vector<double>& swept_volume);
+
     /// Steady: pseudo time steps until the relative change is below the steady tolerance.
     /// Returns the number of pseudo steps.
     unsigned int solve_steady();
@@ -86,6 +109,8 @@ namespace fvfsi
     /// Volumetric face fluxes F_f = S_f . u_f [m^3/s] (per unit depth in 2D), indexed like
     /// FVGeometry::faces.
     const FaceVector& face_flux() const { return F; }
+    /// Mesh fluxes F_f^mesh of the last time step [m^3/s] (zero on a fixed mesh).
+    const FaceVector& mesh_flux() const { return F_mesh; }
     /// Force of the fluid on the body behind a wall patch, sum over its faces of
     /// S_f (p_f n_f - mu (n.grad u)_f) [N] (per unit depth in 2D), n_f out of the fluid.
     dealii::Tensor<1, dim> patch_force(unsigned int patch) const;
@@ -128,6 +153,10 @@ namespace fvfsi
     void correct_fluxes();
     void correct_velocity();
     void shift_time_levels();
+    /// F_f^mesh of the current time step from the swept volumes.
+    void compute_mesh_fluxes();
+    /// r1_f = (V^o / V)_f and r2_f = (V^oo / V)_f, interpolated linearly (1 on a fixed mesh).
+    std::array<double, 2> volume_ratios(unsigned int f) const;
     /// True when the preconditioners are to be rebuilt (every `Preconditioner update interval`
     /// time steps; in between, the matrices change a little and the old ones still work).
     bool refresh_preconditioners() const
@@ -161,6 +190,11 @@ namespace fvfsi
     CellVectorField<dim> u, u_old, u_old2;
     CellVector p;
     FaceVector F, F_old, F_old2, F_mesh;
+    // Mesh motion: cell volumes, swept volumes, face area vectors and centres of the old levels.
+    std::vector<double> V_old, V_old2;
+    FaceVector swept, swept_old;
+    std::vector<dealii::Tensor<1, dim>> S_old, S_old2;
+    std::vector<dealii::Point<dim>> r_f_old, r_f_old2;
     double current_time = 0;
     unsigned int time_step_number = 0;
 
