@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace fvfsi
@@ -103,16 +104,28 @@ namespace fvfsi
           cell->vertex(v) = x[cell->vertex_index(v)];
     // Mesh quality: the smallest V_P / V_P(reference); <= 0 is an inverted cell.
     double min_ratio = std::numeric_limits<double>::max();
+    Point<dim> worst;
     for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
-      min_ratio = std::min(min_ratio, fv->cell_volume[c] / reference_fv->cell_volume[c]);
-    min_ratio = Utilities::MPI::min(min_ratio, comm);
+      if (fv->cell_volume[c] / reference_fv->cell_volume[c] < min_ratio)
+      {
+        min_ratio = fv->cell_volume[c] / reference_fv->cell_volume[c];
+        worst = reference_fv->centroid[c];
+      }
+    const auto stats = Utilities::MPI::min_max_avg(min_ratio, comm);
+    min_ratio = stats.min;
+    worst = Utilities::MPI::broadcast(comm, worst, stats.min_index);
     result.min_volume_ratio = std::min(result.min_volume_ratio, min_ratio);
     if (!(min_ratio > 0))
+    {
+      std::ostringstream where;
+      where << worst;
       throw std::runtime_error("Mesh motion: a cell is inverted (volume <= 0) at t = " +
                                Utilities::to_string(fluid->time() + fluid_parameters.time_step) +
-                               " s; the displacement is too large for this mesh (try Mesh "
+                               " s, the cell with reference centroid (" + where.str() +
+                               ") m; the displacement is too large for this mesh (try Mesh "
                                "motion/Diffusivity = quadratic inverse distance, or a finer mesh "
                                "near the moving patches)");
+    }
     fluid->move_mesh(swept);
   }
 

@@ -52,6 +52,11 @@ namespace fvfsi
                       "Outer (PIMPLE) loops per time step: momentum re-assembled with the latest "
                       "fluxes; 1 = plain PISO.",
                       Patterns::Integer(1, 1000));
+    prm.add_parameter("Flux extrapolation", flux_extrapolation,
+                      "BDF2 steps: the first outer loop linearises the convection with the "
+                      "extrapolated flux 2 F^n - F^(n-1) (second order in time with one outer "
+                      "loop); false: with F^n, a first-order lag as in OpenFOAM's PISO.",
+                      Patterns::Bool());
     prm.add_parameter("Pressure correctors", pressure_correctors,
                       "PISO pressure corrections per outer loop.", Patterns::Integer(1, 100));
     prm.add_parameter("Non-orthogonal correctors", non_orthogonal_correctors,

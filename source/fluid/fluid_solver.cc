@@ -335,6 +335,11 @@ namespace fvfsi
     for (auto& fn : functions)
       fn->set_time(current_time);
     compute_mesh_fluxes();
+    if (prm.transient && prm.flux_extrapolation && time_step_number > 1)
+      // The convecting flux of the first outer loop, F^n + (F^n - F^(n-1)): the lag of the
+      // linearisation becomes O(dt^2). The PISO correctors overwrite F with the new flux.
+      for (unsigned int f = 0; f < F.size(); ++f)
+        F[f] = 2 * F_old[f] - F_old2[f];
 
     try
     {

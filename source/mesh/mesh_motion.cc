@@ -10,6 +10,8 @@
 #include <fvfsi/fv/gradients.h>
 #include <fvfsi/mesh/mesh_motion.h>
 
+#include <algorithm>
+
 #include <stdexcept>
 
 namespace fvfsi
@@ -40,9 +42,10 @@ namespace fvfsi
                       "`;`).");
     prm.add_parameter("Diffusivity", diffusivity,
                       "Laplace: gamma_f = 1 / max(r_f, d_fn)^2 with r_f the distance of the face "
-                      "centre from the nearest moving-patch face (quadratic inverse distance), or 1 "
-                      "(uniform).",
-                      Patterns::Selection("quadratic inverse distance|uniform"));
+                      "centre from the nearest moving-patch face (quadratic inverse distance), "
+                      "1 / max(r_f, d_fn) (inverse distance: spreads the deformation more evenly "
+                      "in narrow channels), or 1 (uniform).",
+                      Patterns::Selection("quadratic inverse distance|inverse distance|uniform"));
     prm.add_parameter("Non-orthogonal correctors", non_orthogonal_correctors,
                       "Laplace: deferred-correction solves of Eq. 19's non-orthogonal part per "
                       "motion.",
@@ -109,7 +112,8 @@ namespace fvfsi
         throw std::runtime_error("Mesh motion/Moving patches: `" + item +
                                  "` is not `patch: expressions`");
       MovingPatch patch;
-      patch.id = mesh_parameters.patch_id(Utilities::trim(item.substr(0, colon)));
+      patch.name = Utilities::trim(item.substr(0, colon));
+      patch.id = mesh_parameters.patch_id(patch.name);
       patch.expression = std::make_unique<FunctionParser<dim>>(dim);
       initialize_function(*patch.expression, Utilities::trim(item.substr(colon + 1)),
                           "Mesh motion/Moving patches");
@@ -155,17 +159,43 @@ namespace fvfsi
       std::vector<Point<dim>> nearest;
       tree.query(boost::geometry::index::nearest(face.centre, 1), std::back_inserter(nearest));
       const double r = std::max(face.centre.distance(nearest[0]), face.d_n);
-      gamma[f] = 1 / (r * r);
+      gamma[f] = prm.diffusivity == "inverse distance" ? 1 / r : 1 / (r * r);
     }
   }
 
   template <int dim>
-  void MeshMotion<dim>::set_patch_displacement(const std::string& patch_name,
+  typename MeshMotion<dim>::MovingPatch& MeshMotion<dim>::moving_patch(const std::string& name)
+  {
+    for (auto& patch : moving)
+      if (patch.name == name)
+        return patch;
+    throw std::runtime_error("Mesh motion: `" + name +
+                             "` is not one of the Moving patches (list it there to move it)");
+  }
+
+  template <int dim>
+  std::vector<unsigned int> MeshMotion<dim>::patch_vertices(const std::string& name)
+  {
+    const unsigned int id = moving_patch(name).id;
+    std::vector<unsigned int> vertices;
+    for (const auto& face : reference.faces)
+      if (face.N == invalid_cell && face.patch == id)
+        vertices.insert(vertices.end(), face.vertices.begin(), face.vertices.end());
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    return vertices;
+  }
+
+  template <int dim>
+  void MeshMotion<dim>::set_patch_displacement(const std::string& name,
                                                const std::vector<Tensor<1, dim>>& displacement)
   {
-    (void)patch_name;
-    (void)displacement;
-    throw std::runtime_error("MeshMotion::set_patch_displacement: not implemented yet");
+    if (prm.type != "Laplace")
+      throw std::runtime_error("Mesh motion: set_patch_displacement needs Type = Laplace");
+    AssertDimension(displacement.size(), reference.vertices().size());
+    MovingPatch& patch = moving_patch(name);
+    patch.expression.reset(); // from now on the given values
+    patch.given = displacement;
   }
 
   template <int dim>
@@ -174,14 +204,15 @@ namespace fvfsi
     // Moving vertices from their patch's expression; fixed boundary vertices stay.
     const auto& X = reference.vertices();
     for (auto& patch : moving)
-      patch.expression->set_time(t);
+      if (patch.expression)
+        patch.expression->set_time(t);
     for (const auto& face : reference.faces)
       if (face.N == invalid_cell)
         for (const auto& patch : moving)
           if (patch.id == face.patch)
             for (const unsigned int v : face.vertices)
               for (unsigned int j = 0; j < dim; ++j)
-                d_vertex[v][j] = patch.expression->value(X[v], j);
+                d_vertex[v][j] = patch.expression ? patch.expression->value(X[v], j) : patch.given[v][j];
     for (unsigned int v = 0; v < d_vertex.size(); ++v)
       if (boundary_vertex[v] == 0)
         d_vertex[v] = Tensor<1, dim>();

@@ -43,6 +43,7 @@ namespace fvfsi
     unsigned int max_steady_iterations = 5000; ///< steady: pseudo time step limit
 
     unsigned int outer_correctors = 1;       ///< PIMPLE outer loops per time step (1 = PISO)
+  bool flux_extrapolation = true; ///< BDF2: first outer loop convects with 2 F^n - F^(n-1)
     unsigned int pressure_correctors = 2;    ///< PISO pressure correctors per outer loop
     unsigned int non_orthogonal_correctors = 2; ///< extra pressure solves for Eq. 19's correction
     bool momentum_predictor = true;

@@ -8,7 +8,8 @@
 //    boundary is fixed, and the interior follows the Laplace equation div(gamma grad d) = 0 with a
 //    variable diffusivity that stiffens the mesh near the moving patches,
 //      gamma_f = 1 / max(r_f, r_min)^2   (quadratic inverse distance, r_f from the face centre to
-//                                         the nearest moving-patch face centre, r_min a cell size),
+//                                         the nearest moving-patch face centre, r_min a cell size;
+//                                         or 1 / max(r_f, r_min), or 1),
 //    so that the small cells there move almost rigidly and the large ones far away absorb the
 //    deformation. It is discretised on the cells by the same FV Laplacian as everything else
 //    (Eq. 19 with deferred non-orthogonal correction), on the reference (undeformed) mesh: the
@@ -46,7 +47,7 @@ namespace fvfsi
     std::string displacement = "";
     /// Laplace: `patch: expressions | patch: expressions`, the displacement of moving patches.
     std::string moving_patches = "";
-    /// Laplace: `quadratic inverse distance` or `uniform`.
+    /// Laplace: `quadratic inverse distance`, `inverse distance` or `uniform`.
     std::string diffusivity = "quadratic inverse distance";
     unsigned int non_orthogonal_correctors = 2;
     LinearSolverParameters solver;
@@ -64,9 +65,14 @@ namespace fvfsi
     MeshMotion(const FVGeometry<dim>& reference, const MeshParameters& mesh_parameters,
                const MeshMotionParameters& parameters);
 
+    /// The vertices (triangulation indices) of a moving patch that this rank's cells touch: the
+    /// entries set_patch_displacement reads.
+    std::vector<unsigned int> patch_vertices(const std::string& patch);
+
     /// Laplace: set the displacement [m] of the vertices of a moving patch from outside (e.g. the
-    /// solid's interface displacement), replacing the patch's expression. Indexed like the
-    /// triangulation's vertices; only the patch's vertices are read.
+    /// solid's interface displacement), replacing the patch's expression from then on. Indexed
+    /// like the triangulation's vertices; only the entries of patch_vertices(patch) are read.
+    /// Throws if the patch is not one of the Moving patches.
     void set_patch_displacement(const std::string& patch,
                                 const std::vector<dealii::Tensor<1, dim>>& vertex_displacement);
 
@@ -90,11 +96,13 @@ namespace fvfsi
     // Laplace.
     struct MovingPatch
     {
+      std::string name;
       unsigned int id;
       std::unique_ptr<dealii::FunctionParser<dim>> expression; ///< null when set from outside
       std::vector<dealii::Tensor<1, dim>> given;               ///< per vertex, when set from outside
     };
     std::vector<MovingPatch> moving;
+    MovingPatch& moving_patch(const std::string& name);
     Laplacian<dim> laplacian;
     VertexInterpolation<dim> vertex_interpolation;
     LinearSolver solver;
