@@ -48,7 +48,7 @@ namespace fvfsi
     /// Laplace: `patch: expressions | patch: expressions`, the displacement of moving patches.
     std::string moving_patches = "";
     /// Laplace: `quadratic inverse distance`, `inverse distance` or `uniform`.
-    std::string diffusivity = "quadratic inverse distance";
+    std::string diffusivity = "inverse distance";
     unsigned int non_orthogonal_correctors = 2;
     LinearSolverParameters solver;
 
