@@ -336,10 +336,17 @@ namespace fvfsi
       fn->set_time(current_time);
     compute_mesh_fluxes();
     if (prm.transient && prm.flux_extrapolation && time_step_number > 1)
-      // The convecting flux of the first outer loop, F^n + (F^n - F^(n-1)): the lag of the
-      // linearisation becomes O(dt^2). The PISO correctors overwrite F with the new flux.
+    {
+      // The first outer loop linearises about the extrapolated state: convecting flux
+      // F^n + (F^n - F^(n-1)), and velocity 2 u^n - u^(n-1) for the explicit parts (deferred
+      // convection and non-orthogonal corrections, boundary values): their lag becomes O(dt^2).
+      // The PISO correctors overwrite F and u with the new values.
       for (unsigned int f = 0; f < F.size(); ++f)
         F[f] = 2 * F_old[f] - F_old2[f];
+      for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+        u.set(c, 2 * u_old[c] - u_old2[c]);
+      u.update_ghost_values();
+    }
 
     try
     {

@@ -50,6 +50,14 @@
 // moves with the mesh: u_b = (I - n n) v_f + n F_f^mesh / S_f, v_f the BDF2 velocity of the face
 // centre. On a fixed mesh r = 1, F^mesh = 0, and all of this reduces to the formulation above.
 //
+// Linearisation (Fluid/Flux extrapolation, default true). The momentum equation of a PISO step is
+// assembled once, so its convecting flux phi and its explicit parts (deferred convection and
+// non-orthogonal corrections, boundary values) are evaluated at a known state. With the previous
+// step's F^n, u^n (OpenFOAM's PISO) that lag is O(dt): plain PISO is first order in time. With
+// the extrapolated state F = 2 F^n - F^(n-1), u = 2 u^n - u^(n-1) the lag is O(dt^2) and one
+// outer loop is second order (tests/fluid/fluid_taylor_green). Outer correctors (PIMPLE)
+// re-assemble with the latest F and u.
+//
 // The solver knows nothing about coupling or mesh motion drivers: it reads the geometry it is
 // given and exposes velocity, pressure, fluxes and patch forces.
 
