@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
 
 #include <fvfsi/base/application.h>
 #include <fvfsi/base/exceptions.h>
@@ -189,6 +190,11 @@ namespace fvfsi
       else
         run_scene<3>(parameters, prm_directory.empty() ? "." : prm_directory, summary, out);
       summary.set("wall_seconds", Utilities::MPI::max(timer.wall_time(), MPI_COMM_WORLD));
+      // Peak resident memory of the largest rank [MB] (VmHWM: libraries included, so memory per
+      // cell is the slope between two mesh sizes, not this over n_cells).
+      Utilities::System::MemoryStats memory;
+      Utilities::System::get_memory_stats(memory);
+      summary.set("peak_memory_mb", Utilities::MPI::max(memory.VmHWM / 1024.0, MPI_COMM_WORLD));
       if (root)
       {
         summary.write(dir + "/summary.json");
