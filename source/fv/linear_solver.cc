@@ -83,25 +83,46 @@ namespace fvfsi
                           false, false);
     if (r0 <= control.tolerance())
       return 0;
-    try
-    {
+    const auto attempt = [&]() {
       if (parameters.method == "CG")
         TrilinosWrappers::SolverCG(control).solve(matrix, x_trilinos, b_trilinos, *preconditioner);
       else
         TrilinosWrappers::SolverGMRES(control).solve(matrix, x_trilinos, b_trilinos, *preconditioner);
-    }
-    catch (const std::exception& e)
+    };
+    unsigned int iterations = 0;
+    try
     {
-      // The solver's own message is a page of deal.II text; the numbers say it all.
-      (void)e;
-      throw std::runtime_error("linear solve of " + what + " failed after " +
-                               std::to_string(control.last_step()) + " iterations (residual " +
-                               Utilities::to_string(control.last_value()) + ", target " +
-                               Utilities::to_string(control.tolerance()) + ")");
+      attempt();
+    }
+    catch (const std::exception&)
+    {
+      // A preconditioner kept from an earlier matrix (callers refresh it only every few steps)
+      // can stop fitting the matrix: the smoother of an AMG hierarchy reads the new values with
+      // old eigenvalue bounds. Rebuild it for this matrix and try once more from the same start.
+      iterations = control.last_step();
+      initialize(matrix); // (re-creates x_trilinos and b_trilinos)
+      for (unsigned int i = 0; i < n; ++i)
+      {
+        x_trilinos.trilinos_vector()[0][i] = x.local_element(i);
+        b_trilinos.trilinos_vector()[0][i] = b.local_element(i);
+      }
+      try
+      {
+        attempt();
+      }
+      catch (const std::exception&)
+      {
+        // The solver's own message is a page of deal.II text; the numbers say it all.
+        throw std::runtime_error("linear solve of " + what + " failed after " +
+                                 std::to_string(control.last_step()) + " iterations (residual " +
+                                 Utilities::to_string(control.last_value()) + ", target " +
+                                 Utilities::to_string(control.tolerance()) +
+                                 "), also with a preconditioner rebuilt for this matrix");
+      }
     }
     for (unsigned int i = 0; i < n; ++i)
       x.local_element(i) = x_trilinos.trilinos_vector()[0][i];
     x.update_ghost_values();
-    return control.last_step();
+    return iterations + control.last_step();
   }
 } // namespace fvfsi
