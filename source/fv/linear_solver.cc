@@ -3,6 +3,7 @@
 
 #include <fvfsi/fv/linear_solver.h>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace fvfsi
@@ -81,6 +82,10 @@ namespace fvfsi
     SolverControl control(parameters.max_iterations,
                           std::max({parameters.absolute_tolerance, parameters.reduction * r0, round_off}),
                           false, false);
+    if (!std::isfinite(r0))
+      throw std::runtime_error("linear solve of " + what +
+                               ": the right-hand side or the start value is not finite (NaN or "
+                               "inf): the solution diverged before this solve");
     if (r0 <= control.tolerance())
       return 0;
     const auto attempt = [&]() {
