@@ -24,26 +24,54 @@ namespace fvfsi
     gradient.update_ghost_values();
   }
 
+  namespace
+  {
+    // (grad phi)_P = 1/V_P sum_f S_f phi_f with phi_f = w phi_P + (1 - w) phi_N + correction_f.
+    template <int dim, typename Correction>
+    void gauss_gradient(const FVGeometry<dim>& geometry, const CellVector& phi,
+                        const FaceVector& boundary_values, const Correction& correction,
+                        CellGradient<dim>& gradient)
+    {
+      std::vector<Tensor<1, dim>> sum(geometry.n_owned_cells());
+      for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+      {
+        const auto& face = geometry.faces[f];
+        if (face.kind == FaceKind::ghost_boundary)
+          continue;
+        const double phi_f = face.N == invalid_cell
+                               ? boundary_values[f]
+                               : face.w * phi.local_element(face.P) +
+                                   (1 - face.w) * phi.local_element(face.N) + correction(f);
+        sum[face.P] += phi_f * face.S;
+        if (face.kind == FaceKind::interior)
+          sum[face.N] -= phi_f * face.S;
+      }
+      for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+        gradient.set(c, sum[c] / geometry.cell_volume[c]);
+      gradient.update_ghost_values();
+    }
+  } // namespace
+
   template <int dim>
   void gauss_linear_gradient(const FVGeometry<dim>& geometry, const CellVector& phi,
-                             const FaceVector& boundary_values, CellGradient<dim>& gradient)
+                             const FaceVector& boundary_values, CellGradient<dim>& gradient,
+                             const bool skew_corrected)
   {
-    std::vector<Tensor<1, dim>> sum(geometry.n_owned_cells());
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.kind == FaceKind::ghost_boundary)
-        continue;
-      const double phi_f = face.N == invalid_cell
-                             ? boundary_values[f]
-                             : face.w * phi.local_element(face.P) + (1 - face.w) * phi.local_element(face.N);
-      sum[face.P] += phi_f * face.S;
-      if (face.kind == FaceKind::interior)
-        sum[face.N] -= phi_f * face.S;
-    }
-    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
-      gradient.set(c, sum[c] / geometry.cell_volume[c]);
-    gradient.update_ghost_values();
+    gauss_gradient(geometry, phi, boundary_values, [](unsigned int) { return 0.0; }, gradient);
+    if (!skew_corrected)
+      return;
+    // Skew correction: the linear interpolation is a value at r_f' = w r_P + (1 - w) r_N on the
+    // line P-N; move it to the face centre r_f with the plain gradient, interpolated the same way.
+    const CellGradient<dim> plain = gradient;
+    gauss_gradient(
+      geometry, phi, boundary_values,
+      [&](const unsigned int f) {
+        const auto& face = geometry.faces[f];
+        const Point<dim> r_f_prime(face.w * geometry.centroid[face.P] +
+                                   (1 - face.w) * geometry.centroid[face.N]);
+        return (face.centre - r_f_prime) * (face.w * plain[face.P] + (1 - face.w) * plain[face.N]);
+      },
+      gradient);
   }
 
   template <int dim>
@@ -98,9 +126,9 @@ namespace fvfsi
   template void gauss_green_gradient(const FVGeometry<3>&, const std::vector<double>&,
                                      CellGradient<3>&);
   template void gauss_linear_gradient(const FVGeometry<2>&, const CellVector&, const FaceVector&,
-                                      CellGradient<2>&);
+                                      CellGradient<2>&, bool);
   template void gauss_linear_gradient(const FVGeometry<3>&, const CellVector&, const FaceVector&,
-                                      CellGradient<3>&);
+                                      CellGradient<3>&, bool);
   template class LeastSquaresGradient<2>;
   template class LeastSquaresGradient<3>;
 } // namespace fvfsi

@@ -26,7 +26,8 @@ namespace fvfsi
                       "Face gradient: present (paper: central normal part + vertex Gauss-Green "
                       "tangential part, also on boundary faces), Demirdzic-Muzaferija (least-squares "
                       "cell gradients interpolated to faces), Jasak-Weller (cell-centred Gauss "
-                      "gradients, as OpenFOAM's solidDisplacementFoam).",
+                      "gradients with skew-corrected linear face values, the model of OpenFOAM's "
+                      "solidDisplacementFoam).",
                       Patterns::Selection("present|Demirdzic-Muzaferija|Jasak-Weller"));
     prm.add_parameter("Transient", transient,
                       "true: inertia with the BDF2 (backward) scheme, Eqs 17-18, first step backward "

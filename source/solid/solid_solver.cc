@@ -256,7 +256,7 @@ void SolidSolver<dim>::update_gradients()
       else if (parameters.variant == "Demirdzic-Muzaferija")
         least_squares.compute(u_j, boundary_values, grad_u[j]);
       else
-        gauss_linear_gradient(geometry, u_j, boundary_values, grad_u[j]);
+        gauss_linear_gradient(geometry, u_j, boundary_values, grad_u[j], /*skew_corrected=*/true);
     }
     if (parameters.variant == "present")
     {

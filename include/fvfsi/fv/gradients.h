@@ -21,12 +21,16 @@ namespace fvfsi
   /**
    * Cell-based Gauss gradient with linearly interpolated face values ("Gauss linear", what
    * OpenFOAM's solidDisplacementFoam uses): (grad phi)_P = 1/V_P sum_f S_f phi_f. Exact for linear
-   * fields only where face centres lie on the lines between cell centres. Fills the owned cells
-   * and updates the ghosts.
+   * fields only where face centres lie on the lines between cell centres. With `skew_corrected`
+   * (OpenFOAM's "Gauss skewCorrected linear"), phi_f is moved from r_f' = w r_P + (1 - w) r_N on
+   * the line P-N to the face centre with the plain gradient interpolated the same way: one more
+   * face loop, and an O(h) error of skewed faces (e.g. where mesh blocks meet at a kink) becomes
+   * O(h^2). Fills the owned cells and updates the ghosts.
    */
   template <int dim>
   void gauss_linear_gradient(const FVGeometry<dim>& geometry, const CellVector& phi,
-                             const FaceVector& boundary_values, CellGradient<dim>& gradient);
+                             const FaceVector& boundary_values, CellGradient<dim>& gradient,
+                             bool skew_corrected = false);
 
   /// Face tangential gradient (Eq. 39): (grad_s phi)_f from the vertex values of face f.
   template <int dim>
