@@ -3,7 +3,7 @@
 # tables of doc/results/cfd.md. Every run: one MPI rank, Release build, one run at a time.
 #   CFD2: prm/turek_hron_cfd2.prm with Mesh/Generator arguments n = 16, 24, 32, 48.
 #   CFD2-speed: prm/turek_hron_cfd2.prm as shipped, 3 runs, median wall time.
-#   CFD3: prm/turek_hron_cfd3.prm (10 s, dt = 0.002 s) with n = 24 and 32 (about 10 and 25 min).
+#   CFD3: prm/turek_hron_cfd3.prm with the (n, dt, end time) of the cfd.md table (about 1.5 h).
 # Prints markdown table rows (cells, drag, lift, errors against the reference, pseudo or time
 # steps, wall seconds) and writes doc/results/cfd3_forces.png from the CFD3 histories.
 # Usage: doc/results/cfd.sh [BUILD_DIR [cfd2|cfd2-speed|cfd3 ...]]   (BUILD_DIR must hold a Release fvfsi)
@@ -46,18 +46,19 @@ for section in "${sections[@]}"; do
       done
       echo "CFD2 as shipped: drag error $(field $out/summary.json "'%+.3f%%' % (100*(d['results']['drag']/136.7-1))"), wall times ${walls[*]} s, median $(printf '%s\n' "${walls[@]}" | sort -n | sed -n 2p) s" ;;
     cfd3)
-      echo "| n | cells | dt [s] | drag mean | amplitude | lift mean | amplitude | frequency [Hz] | Courant | wall [s] |"
+      # n, dt [s], end time [s]: the rows of cfd.md (each run 2-60 min on one core).
+      echo "| n | cells | dt [s] | max Courant | end [s] | drag mean | drag amplitude | lift amplitude | frequency [Hz] | wall [s] |"
       echo "|---|---|---|---|---|---|---|---|---|---|"
-      for case in "24 0.002" "32 0.002"; do
+      for case in "24 0.00075 16" "24 0.0037 16" "32 0.002 16" "32 0.001 13" "48 0.002 11"; do
         set -- $case
         out=$runs/cfd3_$1_$2
         "$fvfsi" "$repo/prm/turek_hron_cfd3.prm" --set "Mesh/Generator arguments=$1" \
-          --set "Fluid/Time step=$2" --set "Output directory=$out" > "$out.log" 2>&1 ||
-          { echo "| $1 | failed, see $out.log |"; continue; }
+          --set "Fluid/Time step=$2" --set "Fluid/End time=$3" --set "Fluid scene/Output interval=0" \
+          --set "Output directory=$out" > "$out.log" 2>&1 || { echo "| $1 | failed, see $out.log |"; continue; }
         s=$out/summary.json
         d="d['results']['drag_mean_amplitude_frequency']"; l="d['results']['lift_mean_amplitude_frequency']"
-        echo "| $1 | $(field $s "d['n_cells']") | $2 | $(field $s "'%.2f' % $d[0]") | $(field $s "'%.3f' % $d[1]") | $(field $s "'%.2f' % $l[0]") | $(field $s "'%.2f' % $l[1]") | $(field $s "'%.4f' % $l[2]") | $(tail -1 $out/fluid_history.txt | awk '{printf "%.2f", $4}') | $(field $s "'%.0f' % d['wall_seconds']") |"
+        echo "| $1 | $(field $s "d['n_cells']") | $2 | $(awk '!/^#/ {if ($4 > m) m = $4} END {printf "%.1f", m}' $out/fluid_history.txt) | $3 | $(field $s "'%.2f (%+.2f%%)' % ($d[0], 100*($d[0]/439.45-1))") | $(field $s "'%.3f (%+.1f%%)' % ($d[1], 100*($d[1]/5.6183-1))") | $(field $s "'%.2f (%+.1f%%)' % ($l[1], 100*($l[1]/437.81-1))") | $(field $s "'%.4f (%+.2f%%)' % ($l[2], 100*($l[2]/4.3956-1))") | $(field $s "'%.0f' % d['wall_seconds']") |"
       done
-      /usr/bin/python3 "$script_dir/cfd3_plot.py" "$script_dir/cfd3_forces.png" "$runs"/cfd3_*/fluid_history.txt ;;
+      /usr/bin/python3 "$script_dir/cfd3_plot.py" "$script_dir/cfd3_forces.png" "$runs"/cfd3_32_*/fluid_history.txt "$runs"/cfd3_48_*/fluid_history.txt ;;
   esac
 done
