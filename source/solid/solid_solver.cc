@@ -431,8 +431,17 @@ unsigned int SolidSolver<dim>::solve_time_step()
     for (unsigned int j = 0; j < dim; ++j)
     {
       du[j] = 0;
-      linear_solver[j]->solve(matrix[j], du[j], residual[j],
-                              "solid displacement component " + std::to_string(j));
+      try
+      {
+        linear_solver[j]->solve(matrix[j], du[j], residual[j],
+                                "solid displacement component " + std::to_string(j));
+      }
+      catch (const std::exception& e)
+      {
+        throw std::runtime_error("Solid: at time step " + std::to_string(time_step_number) +
+                                 " (t = " + Utilities::to_string(current_time) +
+                                 " s), outer iteration " + std::to_string(k) + ": " + e.what());
+      }
       for (unsigned int c = 0; c < n_owned; ++c)
       {
         x[j * n_owned + c] = u.components[j].local_element(c);
@@ -459,7 +468,7 @@ unsigned int SolidSolver<dim>::solve_time_step()
     if (!std::isfinite(max_u) || !std::isfinite(max_du))
       throw std::runtime_error(
           "Solid: displacement is not finite at time step " + std::to_string(time_step_number) +
-          " (t = " + std::to_string(current_time) + " s), outer iteration " + std::to_string(k));
+          " (t = " + Utilities::to_string(current_time) + " s), outer iteration " + std::to_string(k));
     if (change < parameters.outer_tolerance || max_u == 0)
     {
       update_gradients();
@@ -468,8 +477,8 @@ unsigned int SolidSolver<dim>::solve_time_step()
   }
   throw std::runtime_error(
       "Solid: outer iterations did not converge at time step " + std::to_string(time_step_number) +
-      " (t = " + std::to_string(current_time) + " s): relative change " + std::to_string(change) +
-      " after " + std::to_string(parameters.max_outer_iterations) +
+      " (t = " + Utilities::to_string(current_time) + " s): relative change " +
+      Utilities::to_string(change) + " after " + std::to_string(parameters.max_outer_iterations) +
       " iterations (raise Solid/Max outer iterations, or reduce the load or time step)");
 }
 
