@@ -3,7 +3,7 @@
 # tables of doc/results/cfd.md. Every run: one MPI rank, Release build, one run at a time.
 #   CFD2: prm/turek_hron_cfd2.prm with Mesh/Generator arguments n = 16, 24, 32, 48.
 #   CFD2-speed: prm/turek_hron_cfd2.prm as shipped, 3 runs, median wall time.
-#   CFD3: prm/turek_hron_cfd3.prm with the (n, dt, end time) of the cfd.md table (about 1.5 h).
+#   CFD3: prm/turek_hron_cfd3.prm with the (n, dt, end time) of the cfd.md table (about 2.5 h).
 # Prints markdown table rows (cells, drag, lift, errors against the reference, pseudo or time
 # steps, wall seconds) and writes doc/results/cfd3_forces.png from the CFD3 histories.
 # Usage: doc/results/cfd.sh [BUILD_DIR [cfd2|cfd2-speed|cfd3 ...]]   (BUILD_DIR must hold a Release fvfsi)
@@ -49,7 +49,7 @@ for section in "${sections[@]}"; do
       # n, dt [s], end time [s]: the rows of cfd.md (each run 2-60 min on one core).
       echo "| n | cells | dt [s] | max Courant | end [s] | drag mean | drag amplitude | lift amplitude | frequency [Hz] | wall [s] |"
       echo "|---|---|---|---|---|---|---|---|---|---|"
-      for case in "24 0.00075 16" "24 0.0037 16" "32 0.002 16" "32 0.001 13" "48 0.002 11"; do
+      for case in "24 0.00075 16" "24 0.0037 16" "32 0.002 16" "32 0.001 13" "48 0.002 11" "48 0.001 11"; do
         set -- $case
         out=$runs/cfd3_$1_$2
         "$fvfsi" "$repo/prm/turek_hron_cfd3.prm" --set "Mesh/Generator arguments=$1" \
