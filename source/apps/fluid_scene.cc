@@ -122,9 +122,9 @@ namespace fvfsi
       throw std::runtime_error("Mesh motion: a cell is inverted (volume <= 0) at t = " +
                                Utilities::to_string(fluid->time() + fluid_parameters.time_step) +
                                " s, the cell with reference centroid (" + where.str() +
-                               ") m; the displacement is too large for this mesh (try Mesh "
-                               "motion/Diffusivity = quadratic inverse distance, or a finer mesh "
-                               "near the moving patches)");
+                               ") m; the displacement is too large for this mesh (try another Mesh "
+                               "motion/Diffusivity, see doc/results/mesh_motion.md, or a finer "
+                               "mesh near the moving patches)");
     }
     fluid->move_mesh(swept);
   }
