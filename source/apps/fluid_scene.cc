@@ -24,6 +24,11 @@ namespace fvfsi
     prm.add_parameter("Force patches", force_patches,
                       "Patches whose summed fluid force is reported as drag (x) and lift (y) "
                       "[N, per unit depth in 2D], comma separated.");
+    prm.add_parameter("Probes", probes,
+                      "Named points whose velocity and pressure are recorded every time step in "
+                      "fluid_history.txt and reported in summary.json as point_<name>_velocity "
+                      "[m/s] and point_<name>_pressure [Pa]: `A: 0.6, 0.2 | B: 0.3, 0.21`; the "
+                      "points are fixed in space (also on a moving mesh).");
     prm.add_parameter("Exact velocity", exact_velocity,
                       "Exact u(x, y[, z], t) (dim expressions separated by `;`) for "
                       "results.max_velocity_error; empty: none.");
@@ -72,6 +77,7 @@ namespace fvfsi
     , output_directory(output_directory)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
     , triangulation(comm)
+    , probes(scene_parameters.probes, "Fluid scene/Probes")
   {
   }
 
@@ -81,6 +87,7 @@ namespace fvfsi
     make_mesh(mesh_parameters, triangulation, prm_directory);
     fv = std::make_unique<FVGeometry<dim>>(triangulation);
     fluid = std::make_unique<FluidSolver<dim>>(*fv, mesh_parameters, fluid_parameters);
+    probes.locate(*fv);
     if (scene_parameters.mesh_motion.moves())
     {
       if (!fluid_parameters.transient)
@@ -127,6 +134,25 @@ namespace fvfsi
                                "mesh near the moving patches)");
     }
     fluid->move_mesh(swept);
+    probes.locate(*fv);
+  }
+
+  template <int dim>
+  std::pair<Tensor<1, dim>, double> FluidScene<dim>::probe_values(const unsigned int i) const
+  {
+    const Tensor<1, dim> u = probes.template evaluate<Tensor<1, dim>>(
+      i, [this](const unsigned int c, const Tensor<1, dim>& dx) {
+        Tensor<1, dim> value = fluid->velocity()[c];
+        for (unsigned int j = 0; j < dim; ++j)
+          value[j] += dx * fluid->velocity_gradient(j)[c];
+        return value;
+      });
+    const double p = probes.template evaluate<double>(
+      i, [this](const unsigned int c, const Tensor<1, dim>& dx) {
+        return fluid->kinematic_pressure().local_element(c) +
+               dx * fluid->kinematic_pressure_gradient()[c];
+      });
+    return {u, fluid_parameters.rho * p};
   }
 
   template <int dim>
@@ -144,6 +170,9 @@ namespace fvfsi
     // One line per time step (collective: forces and diagnostics are MPI reductions).
     const Tensor<1, dim> force = body_force();
     const double courant = fluid->courant_number(), continuity = fluid->continuity_error();
+    final_probe_values.clear();
+    for (unsigned int i = 0; i < probes.size(); ++i)
+      final_probe_values.push_back(probe_values(i));
     history_t.push_back(fluid->time());
     history_drag.push_back(force[0]);
     history_lift.push_back(force[1]);
@@ -152,9 +181,26 @@ namespace fvfsi
     std::ofstream out(output_directory + "/fluid_history.txt",
                       history_t.size() == 1 ? std::ios::trunc : std::ios::app);
     if (history_t.size() == 1)
-      out << "# t drag lift courant continuity_error\n";
+    {
+      out << "# t drag lift courant continuity_error";
+      const char* axis[] = {"x", "y", "z"};
+      for (unsigned int i = 0; i < probes.size(); ++i)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          out << " u" << axis[d] << "_" << probes.name(i);
+        out << " p_" << probes.name(i);
+      }
+      out << "\n";
+    }
     out << std::setprecision(10) << fluid->time() << ' ' << force[0] << ' ' << force[1] << ' '
-        << courant << ' ' << continuity << "\n";
+        << courant << ' ' << continuity;
+    for (const auto& [u, p] : final_probe_values)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        out << ' ' << u[d];
+      out << ' ' << p;
+    }
+    out << "\n";
   }
 
   template <int dim>
@@ -306,6 +352,13 @@ namespace fvfsi
     }
     if (motion)
       summary.set_result("min_cell_volume_ratio", result.min_volume_ratio);
+    for (unsigned int i = 0; i < probes.size(); ++i)
+    {
+      const auto& [u, p] = final_probe_values[i];
+      summary.set_result("point_" + probes.name(i) + "_velocity",
+                         std::vector<double>(&u[0], &u[0] + dim));
+      summary.set_result("point_" + probes.name(i) + "_pressure", p);
+    }
     if (result.max_velocity_error >= 0)
     {
       summary.set_result("max_velocity_error", result.max_velocity_error);

@@ -49,19 +49,8 @@ namespace fvfsi
     , output_directory(output_directory)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
     , triangulation(comm)
+    , probes(scene_parameters.probes, "Solid scene/Probes")
   {
-    for (const auto& item : Utilities::split_string_list(scene_parameters.probes, '|'))
-    {
-      const auto colon = item.find(':');
-      const auto coordinates = Utilities::split_string_list(item.substr(colon + 1), ',');
-      if (colon == std::string::npos || coordinates.size() != dim)
-        throw std::runtime_error("Solid scene/Probes: `" + item + "` is not `name: x, y" +
-                                 (dim == 3 ? ", z`" : "`"));
-      Point<dim> p;
-      for (unsigned int d = 0; d < dim; ++d)
-        p[d] = Utilities::string_to_double(coordinates[d]);
-      probes.emplace_back(Utilities::trim(item.substr(0, colon)), p);
-    }
   }
 
   template <int dim>
@@ -70,6 +59,16 @@ namespace fvfsi
     make_mesh(mesh_parameters, triangulation, prm_directory);
     fv = std::make_unique<FVGeometry<dim>>(triangulation);
     solid = std::make_unique<SolidSolver<dim>>(*fv, mesh_parameters, solid_parameters);
+    probes.locate(*fv);
+  }
+
+  template <int dim>
+  Tensor<1, dim> SolidScene<dim>::probe_displacement(const unsigned int i) const
+  {
+    return probes.template evaluate<Tensor<1, dim>>(
+      i, [this](const unsigned int c, const Tensor<1, dim>& dx) {
+        return solid->displacement()[c] + dx * solid->cell_gradient(c);
+      });
   }
 
   template <int dim>
@@ -78,9 +77,9 @@ namespace fvfsi
     // One line per time step: t, outer iterations, probe displacements, patch forces.
     std::ostringstream line;
     line << std::setprecision(10) << solid->time();
-    for (const auto& [name, p] : probes)
+    for (unsigned int i = 0; i < probes.size(); ++i)
     {
-      const Tensor<1, dim> u = solid->point_displacement(p);
+      const Tensor<1, dim> u = probe_displacement(i);
       for (unsigned int d = 0; d < dim; ++d)
         line << ' ' << u[d];
     }
@@ -99,9 +98,9 @@ namespace fvfsi
     {
       out << "# t";
       const char* axis[] = {"x", "y", "z"};
-      for (const auto& [name, p] : probes)
+      for (unsigned int i = 0; i < probes.size(); ++i)
         for (unsigned int d = 0; d < dim; ++d)
-          out << " u" << axis[d] << "_" << name;
+          out << " u" << axis[d] << "_" << probes.name(i);
       for (const auto& patch : scene_parameters.force_patches)
         for (unsigned int d = 0; d < dim; ++d)
           out << " F" << axis[d] << "_" << patch;
@@ -145,13 +144,14 @@ namespace fvfsi
         result.max_stress_error.emplace_back(patch, Utilities::MPI::max(max_error, comm));
       }
     }
-    for (const auto& [name, p] : probes)
+    result.probe_displacement.clear();
+    for (unsigned int i = 0; i < probes.size(); ++i)
     {
-      const Tensor<1, dim> u = solid->point_displacement(p);
+      const Tensor<1, dim> u = probe_displacement(i);
       Tensor<1, 3> u3;
       for (unsigned int d = 0; d < dim; ++d)
         u3[d] = u[d];
-      result.probe_displacement.emplace_back(name, u3);
+      result.probe_displacement.emplace_back(probes.name(i), u3);
     }
   }
 

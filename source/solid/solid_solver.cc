@@ -1,6 +1,4 @@
 #include <deal.II/base/mpi.h>
-#include <deal.II/fe/mapping_q1.h>
-#include <deal.II/grid/grid_tools.h>
 
 #include <fvfsi/apps/poisson.h> // initialize_function
 #include <fvfsi/fv/ghost_faces.h>
@@ -502,40 +500,6 @@ Tensor<1, dim> SolidSolver<dim>::patch_force(const unsigned int patch) const
     if (geometry.faces[f].kind == FaceKind::boundary && geometry.faces[f].patch == patch)
       force += geometry.faces[f].area * face_force_density(f);
   return Utilities::MPI::sum(force, geometry.comm());
-}
-
-template <int dim>
-Tensor<1, dim> SolidSolver<dim>::point_displacement(const Point<dim>& x) const
-{
-  // The rank that owns the cell holding x (found with a tolerance, so points on the boundary
-  // count) evaluates the linear reconstruction u_P + (x - r_P) . grad u_P.
-  Tensor<1, dim> value;
-  double found = 0;
-  try
-  {
-    const auto cell_and_point = GridTools::find_active_cell_around_point(
-        StaticMappingQ1<dim>::mapping, geometry.triangulation(), x, std::vector<bool>(), 1e-10);
-    if (cell_and_point.first.state() == IteratorState::valid &&
-        cell_and_point.first->is_locally_owned())
-    {
-      const auto c = geometry.partitioner()->global_to_local(
-          typename DoFHandler<dim>::active_cell_iterator(
-              &geometry.triangulation(), cell_and_point.first->level(),
-              cell_and_point.first->index(), &geometry.dof_handler())
-              ->dof_index(0));
-      value = u[c] + (x - geometry.centroid[c]) * cell_gradient(c);
-      found = 1;
-    }
-  }
-  catch (const std::exception&)
-  {
-    // not in this rank's part of the mesh
-  }
-  const double n_found = Utilities::MPI::sum(found, geometry.comm());
-  if (n_found == 0)
-    throw std::runtime_error("Solid: probe point " + Utilities::to_string(x[0]) + ", " +
-                             Utilities::to_string(x[1]) + " lies outside the mesh");
-  return Utilities::MPI::sum(value, geometry.comm()) / n_found;
 }
 
 template <int dim>

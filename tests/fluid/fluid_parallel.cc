@@ -4,7 +4,8 @@
 // rank 0 while that of (b) runs on the last rank):
 //   (a) Turek-Hron channel (fvfsi_turek_hron_channel, n = 12: 1921 cells), Re = 200, parabolic
 //       inflow with mean velocity 2 m/s from a parabolic initial field, outlet p = 0, no-slip
-//       cylinder and flag, dt = 0.002 s (Courant number 1.3 at the cylinder); also drag and lift;
+//       cylinder and flag, dt = 0.002 s (Courant number 1.3 at the cylinder); also drag and lift,
+//       and u, p at two point probes (`Fluid scene/Probes`);
 //   (b) Kovasznay flow (prm/kovasznay.prm made transient, 768 cells randomly distorted by 0.25 of
 //       the local edge) from u = (1, 0), dt = 0.01 s, exact velocity on the whole boundary: no
 //       outlet, so the pressure level is fixed in global cell 0.
@@ -31,6 +32,7 @@ struct Run
 {
   Values values;
   dealii::Tensor<1, 2> force;
+  std::vector<std::array<double, 3>> probes; // u, v, p [Pa] at each probe
 };
 
 Run run(const fvfsi::AllParameters& p, MPI_Comm comm, const std::string& directory)
@@ -47,6 +49,11 @@ Run run(const fvfsi::AllParameters& p, MPI_Comm comm, const std::string& directo
                                                  scene.solver().kinematic_pressure().local_element(c)}});
   if (!p.fluid_scene.force_patches.empty())
     r.force = scene.body_force();
+  for (unsigned int i = 0; i < scene.point_probes().size(); ++i)
+  {
+    const auto [u, pressure] = scene.probe_values(i);
+    r.probes.push_back({{u[0], u[1], pressure / p.fluid.rho}});
+  }
   return r;
 }
 
@@ -73,6 +80,12 @@ void compare(std::ofstream& out, const std::string& title, const std::vector<Val
         du = std::max(du, std::hypot(v[0] - it->second[0], v[1] - it->second[1]));
         dp = std::max(dp, std::abs(v[2] - it->second[2]));
       }
+  for (unsigned int i = 0; i < reference_run.probes.size(); ++i)
+  {
+    const auto &a = parallel.probes[i], &b = reference_run.probes[i];
+    du = std::max(du, std::hypot(a[0] - b[0], a[1] - b[1]));
+    dp = std::max(dp, std::abs(a[2] - b[2]));
+  }
   std::vector<double> differences = {du / max_u, dp / max_p};
   if (forces)
     for (unsigned int d = 0; d < 2; ++d)
@@ -87,7 +100,8 @@ void compare(std::ofstream& out, const std::string& title, const std::vector<Val
   }
   std::printf("\n");
   out << title << ": " << reference.size() << " cells, all matched: "
-      << yes_no(matched == reference.size()) << ", u and p" << (forces ? ", drag and lift" : "")
+      << yes_no(matched == reference.size()) << ", u and p"
+      << (parallel.probes.empty() ? "" : " (cells and probes)") << (forces ? ", drag and lift" : "")
       << " of np equal np = 1 to 1e-8 relative: " << yes_no(ok) << "\n";
 }
 
@@ -102,7 +116,8 @@ int main(int argc, char** argv)
                                           "Fluid scene/Analysis window=0"};
   std::vector<std::string> channel = {"Mesh/Generator arguments=12", "Fluid/Time step=0.002",
                                       "Fluid/End time=0.04", "Fluid/Initial velocity=" + inflow,
-                                      "Fluid/Velocity inlet=inlet: " + inflow};
+                                      "Fluid/Velocity inlet=inlet: " + inflow,
+                                      "Fluid scene/Probes=wake: 0.8, 0.2 | above: 0.4, 0.3"};
   channel.insert(channel.end(), tight.begin(), tight.end());
   std::vector<std::string> kovasznay = {"Mesh/Global refinements=1", "Fluid/Transient=true",
                                         "Fluid/Time step=0.01", "Fluid/End time=0.2"};

@@ -10,6 +10,7 @@
 
 #include <fvfsi/fluid/fluid_parameters.h>
 #include <fvfsi/fluid/fluid_solver.h>
+#include <fvfsi/fv/point_probes.h>
 #include <fvfsi/io/summary.h>
 #include <fvfsi/mesh/fv_geometry.h>
 #include <fvfsi/mesh/mesh_motion.h>
@@ -25,6 +26,8 @@ namespace fvfsi
   {
     /// Patches whose summed force is the body force (drag = x, lift = y), comma separated.
     std::vector<std::string> force_patches;
+    /// Named probe points, `A: 0.6, 0.2 | B: 0.2, 0.21`: velocity and pressure every time step.
+    std::string probes = "";
     /// Exact velocity (dim expressions of x, y[, z], t) and pressure [Pa]; empty: no errors.
     std::string exact_velocity = "", exact_pressure = "";
     /// Periodic flows: the mean, amplitude and frequency of the forces are taken over the
@@ -73,6 +76,10 @@ namespace fvfsi
     const FluidResults& results() const { return result; }
     /// Force of the fluid on the force patches [N] (per unit depth in 2D).
     dealii::Tensor<1, dim> body_force() const;
+    /// The probes of `Fluid scene/Probes`, and the velocity [m/s] and pressure [Pa] at probe i
+    /// now (collective).
+    const PointProbes<dim>& point_probes() const { return probes; }
+    std::pair<dealii::Tensor<1, dim>, double> probe_values(unsigned int i) const;
 
   private:
     void make_grid();
@@ -94,8 +101,10 @@ namespace fvfsi
     std::unique_ptr<FluidSolver<dim>> fluid;
     std::unique_ptr<FVGeometry<dim>> reference_fv; ///< the undeformed mesh (moving meshes only)
     std::unique_ptr<MeshMotion<dim>> motion;
+    PointProbes<dim> probes;
 
     std::vector<double> history_t, history_drag, history_lift;
+    std::vector<std::pair<dealii::Tensor<1, dim>, double>> final_probe_values;
     FluidResults result;
   };
 } // namespace fvfsi

@@ -7,6 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/distributed/tria.h>
 
+#include <fvfsi/fv/point_probes.h>
 #include <fvfsi/io/summary.h>
 #include <fvfsi/mesh/fv_geometry.h>
 #include <fvfsi/mesh/mesh_parameters.h>
@@ -66,6 +67,8 @@ namespace fvfsi
     void make_grid();
     void compute_errors();
     void record_time_history();
+    /// The displacement at probe i [m] (collective).
+    dealii::Tensor<1, dim> probe_displacement(unsigned int i) const;
     void output_results() const;
 
     MPI_Comm comm;
@@ -77,7 +80,7 @@ namespace fvfsi
     dealii::parallel::distributed::Triangulation<dim> triangulation;
     std::unique_ptr<FVGeometry<dim>> fv;
     std::unique_ptr<SolidSolver<dim>> solid;
-    std::vector<std::pair<std::string, dealii::Point<dim>>> probes;
+    PointProbes<dim> probes;
     std::string history_file;
     SolidResults result;
   };

@@ -112,6 +112,8 @@ namespace fvfsi
     const CellVectorField<dim>& velocity() const { return u; }
     /// Kinematic pressure p / rho at the cell centres [m^2/s^2] (ghosts up to date).
     const CellVector& kinematic_pressure() const { return p; }
+    /// grad (p / rho) at the cell centres [m/s^2].
+    const CellGradient<dim>& kinematic_pressure_gradient() const { return grad_p; }
     /// grad u_j at the cell centres (vertex Gauss-Green, Eq. 37).
     const CellGradient<dim>& velocity_gradient(unsigned int j) const { return grad_u[j]; }
     /// Volumetric face fluxes F_f = S_f . u_f [m^3/s] (per unit depth in 2D), indexed like

@@ -65,9 +65,6 @@ namespace fvfsi
     dealii::Tensor<2, dim> face_stress(unsigned int f) const;
     /// Total force on a patch, sum over its faces of n.(Sigma.F^T) S_f [N] (2D: per unit depth).
     dealii::Tensor<1, dim> patch_force(unsigned int patch) const;
-    /// u at a point inside the mesh (linear reconstruction in the cell that holds it), the same
-    /// on every rank. Throws if no cell holds the point.
-    dealii::Tensor<1, dim> point_displacement(const dealii::Point<dim>& x) const;
 
     /// Cauchy traction [Pa] on the faces of `external traction` patches, indexed like
     /// FVGeometry::faces (entries of other faces are ignored).
