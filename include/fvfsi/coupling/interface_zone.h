@@ -1,0 +1,78 @@
+#pragma once
+// One side of the fluid-solid interface, gathered whole on every rank: the paper's "global face
+// zone" (section 3.6). The fluid and the solid meshes are decomposed independently, so the rank
+// that owns a fluid interface face rarely owns the solid faces it touches; with the whole
+// interface on every rank, each rank interpolates between the two sides on its own, and only the
+// interface data (a few thousand faces) ever crosses ranks.
+//
+// A zone is built once from the locally owned boundary faces of one patch, gathered with
+// Utilities::MPI::all_gather. Its faces are numbered by their centres (lexicographically) and its
+// points (the faces' vertices, each once) by their coordinates, so the numbering is the same on
+// every rank and for every number of ranks. Face and point fields of the zone are plain vectors
+// in that numbering; gather_face_field() and gather_point_field() build them from each rank's
+// local values, and local_faces() / local_points() lead back to the local mesh.
+//
+// The geometry is that of the mesh when the zone is built (for the solid, the reference
+// configuration of its total-Lagrangian description): the interpolation weights between two
+// zones (FaceInterpolation, VertexProjection) are computed once from it, when the two sides of
+// the interface coincide.
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <fvfsi/mesh/fv_geometry.h>
+
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace fvfsi
+{
+  template <int dim>
+  class InterfaceZone
+  {
+  public:
+    /// Vertices per face: 2 in 2D (a segment), 4 in 3D (a quadrilateral).
+    static constexpr unsigned int n_face_points = dealii::GeometryInfo<dim>::vertices_per_face;
+
+    /// Gather the boundary faces of `patch` (a boundary id) of `geometry` (collective). Throws if
+    /// the patch has no face.
+    InterfaceZone(const FVGeometry<dim>& geometry, unsigned int patch, const std::string& name);
+
+    unsigned int n_faces() const { return face_centre.size(); }
+    unsigned int n_points() const { return points.size(); }
+
+    std::string name;                                            ///< for messages
+    std::vector<dealii::Point<dim>> points;                      ///< unique face vertices [m]
+    std::vector<std::array<unsigned int, n_face_points>> face_points; ///< cyclic, into `points`
+    std::vector<dealii::Point<dim>> face_centre;                 ///< r_f [m]
+    std::vector<dealii::Tensor<1, dim>> face_normal;             ///< unit normal out of the mesh
+    std::vector<double> face_area;                               ///< S_f [m^(dim-1)]
+
+    /// (local face index in FVGeometry::faces, zone face index) of this rank's owned faces.
+    const std::vector<std::pair<unsigned int, unsigned int>>& local_faces() const
+    {
+      return local_face_list;
+    }
+    /// (triangulation vertex index, zone point index) of the vertices of this rank's owned faces.
+    const std::vector<std::pair<unsigned int, unsigned int>>& local_points() const
+    {
+      return local_point_list;
+    }
+
+    /// The zone face field whose entry for each zone face is `local_values[f]` of the rank that
+    /// owns face f (local_values indexed like FVGeometry::faces). Collective.
+    std::vector<dealii::Tensor<1, dim>>
+    gather_face_field(const std::vector<dealii::Tensor<1, dim>>& local_values) const;
+
+    /// The zone point field from each rank's values at its points (`local_values` indexed by
+    /// triangulation vertex, like vertex fields of the mesh). A point seen by several ranks takes
+    /// the value of the lowest rank. Collective.
+    std::vector<dealii::Tensor<1, dim>>
+    gather_point_field(const std::vector<dealii::Tensor<1, dim>>& local_values) const;
+
+  private:
+    MPI_Comm comm;
+    std::vector<std::pair<unsigned int, unsigned int>> local_face_list, local_point_list;
+  };
+} // namespace fvfsi
