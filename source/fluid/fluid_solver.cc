@@ -329,12 +329,19 @@ namespace fvfsi
   template <int dim>
   double FluidSolver<dim>::solve_time_step()
   {
+    begin_time_step();
+    solve_current_step();
+    return end_time_step();
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::begin_time_step()
+  {
     ++time_step_number;
     current_time += prm.time_step;
     body_force.set_time(current_time);
     for (auto& fn : functions)
       fn->set_time(current_time);
-    compute_mesh_fluxes();
     if (prm.transient && prm.flux_extrapolation && time_step_number > 1)
     {
       // The first outer loop linearises about the extrapolated state: convecting flux
@@ -347,7 +354,12 @@ namespace fvfsi
         u.set(c, 2 * u_old[c] - u_old2[c]);
       u.update_ghost_values();
     }
+  }
 
+  template <int dim>
+  void FluidSolver<dim>::solve_current_step()
+  {
+    compute_mesh_fluxes();
     try
     {
       for (unsigned int outer = 0; outer < prm.outer_correctors; ++outer)
@@ -362,7 +374,11 @@ namespace fvfsi
     }
     update_velocity_boundary_values();
     update_velocity_gradients();
+  }
 
+  template <int dim>
+  double FluidSolver<dim>::end_time_step()
+  {
     // Relative change over the step.
     double max_du = 0, max_u = 0;
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
@@ -432,13 +448,20 @@ namespace fvfsi
       const auto& face = geometry.faces[f];
       if (face.kind != FaceKind::boundary || face.patch != patch)
         continue;
-      Tensor<1, dim> du_dn = boundary_u[f] - u[face.P]; // Eq. 23
-      for (unsigned int j = 0; j < dim; ++j)
-        du_dn[j] -= face.k_P * grad_u[j][face.P];
-      du_dn /= face.d_n;
-      force += prm.rho * face.area * (boundary_p[f] * face.n - prm.nu * du_dn);
+      force += face.area * wall_traction(f);
     }
     return Utilities::MPI::sum(force, geometry.comm());
+  }
+
+  template <int dim>
+  Tensor<1, dim> FluidSolver<dim>::wall_traction(const unsigned int f) const
+  {
+    const auto& face = geometry.faces[f];
+    Tensor<1, dim> du_dn = boundary_u[f] - u[face.P]; // Eq. 23
+    for (unsigned int j = 0; j < dim; ++j)
+      du_dn[j] -= face.k_P * grad_u[j][face.P];
+    du_dn /= face.d_n;
+    return prm.rho * (boundary_p[f] * face.n - prm.nu * du_dn);
   }
 
   template <int dim>

@@ -396,6 +396,13 @@ void SolidSolver<dim>::shift_time_levels()
 template <int dim>
 unsigned int SolidSolver<dim>::solve_time_step()
 {
+  begin_time_step();
+  return solve_current_step();
+}
+
+template <int dim>
+void SolidSolver<dim>::begin_time_step()
+{
   if (time_step_number > 0 && parameters.transient)
     shift_time_levels();
   ++time_step_number;
@@ -408,7 +415,11 @@ unsigned int SolidSolver<dim>::solve_time_step()
       !parameters.transient ? 0 : (time_step_number == 1 ? 1 / (dt * dt) : 9 / (4 * dt * dt));
   if (mass_coefficient != assembled_mass_coefficient)
     assemble_matrices(mass_coefficient);
+}
 
+template <int dim>
+unsigned int SolidSolver<dim>::solve_current_step()
+{
   std::array<CellVector, dim> residual, du;
   for (unsigned int j = 0; j < dim; ++j)
   {
@@ -500,6 +511,29 @@ Tensor<1, dim> SolidSolver<dim>::patch_force(const unsigned int patch) const
     if (geometry.faces[f].kind == FaceKind::boundary && geometry.faces[f].patch == patch)
       force += geometry.faces[f].area * face_force_density(f);
   return Utilities::MPI::sum(force, geometry.comm());
+}
+
+template <int dim>
+std::vector<Tensor<1, dim>> SolidSolver<dim>::vertex_displacements() const
+{
+  std::vector<Tensor<1, dim>> d(geometry.vertices().size());
+  std::vector<double> values;
+  for (unsigned int j = 0; j < dim; ++j)
+  {
+    const std::vector<double>* v = &vertex_u[j];
+    if (parameters.variant != "present")
+    {
+      // The other variants do not use vertex values: reconstruct them (App. B) for the caller.
+      FaceVector boundary_values(geometry.faces.size());
+      for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+        boundary_values[f] = boundary_u[f][j];
+      vertex_interpolation.interpolate(u.components[j], boundary_values, values);
+      v = &values;
+    }
+    for (unsigned int i = 0; i < d.size() && i < v->size(); ++i)
+      d[i][j] = (*v)[i];
+  }
+  return d;
 }
 
 template <int dim>

@@ -93,6 +93,13 @@ namespace fvfsi
     /// dt max|du/dt| / max|u| of the step. Throws std::runtime_error naming the time step and
     /// the field if a value becomes non-finite.
     double solve_time_step();
+    /// solve_time_step() in three parts, for a coupling that solves one time step several times
+    /// (each time after a new move_mesh()): begin_time_step() moves to the next time level,
+    /// solve_current_step() (repeatable) solves it from the current iterate, end_time_step()
+    /// accepts it and returns the relative change.
+    void begin_time_step();
+    void solve_current_step();
+    double end_time_step();
 
     /// The driver has moved the mesh for the coming time step (FVGeometry::reinit) and passes
     /// the volumes the faces swept, FVGeometry::swept_volumes() of that motion [m^dim]. The next
@@ -124,6 +131,9 @@ namespace fvfsi
     /// Force of the fluid on the body behind a wall patch, sum over its faces of
     /// S_f (p_f n_f - mu (n.grad u)_f) [N] (per unit depth in 2D), n_f out of the fluid.
     dealii::Tensor<1, dim> patch_force(unsigned int patch) const;
+    /// The force per unit area the fluid exerts on the wall at boundary face f,
+    /// rho (p_f n_f - nu (n.grad u)_f) [Pa], n_f out of the fluid.
+    dealii::Tensor<1, dim> wall_traction(unsigned int f) const;
     /// True if an outlet fixes the pressure level; otherwise p = 0 in global cell 0.
     bool pressure_level_is_fixed() const { return pressure_level_fixed; }
     /// max over owned cells of |div u| V_P / (sum_f |F_f|): the continuity error.

@@ -47,6 +47,11 @@ namespace fvfsi
     /// Returns the number of outer iterations. Throws std::runtime_error naming the time step if
     /// the iterations diverge (non-finite values) or exceed the limit.
     unsigned int solve_time_step();
+    /// solve_time_step() in two parts, for a coupling that solves one time step several times:
+    /// begin_time_step() moves to the next time level; solve_current_step() (repeatable, e.g.
+    /// with new external tractions) solves it from the current iterate.
+    void begin_time_step();
+    unsigned int solve_current_step();
 
     double time() const { return current_time; }
     unsigned int step() const { return time_step_number; }
@@ -65,6 +70,10 @@ namespace fvfsi
     dealii::Tensor<2, dim> face_stress(unsigned int f) const;
     /// Total force on a patch, sum over its faces of n.(Sigma.F^T) S_f [N] (2D: per unit depth).
     dealii::Tensor<1, dim> patch_force(unsigned int patch) const;
+
+    /// u at the vertices of the locally owned cells [m], indexed like the triangulation's
+    /// vertices (App. B reconstruction; other entries zero).
+    std::vector<dealii::Tensor<1, dim>> vertex_displacements() const;
 
     /// Cauchy traction [Pa] on the faces of `external traction` patches, indexed like
     /// FVGeometry::faces (entries of other faces are ignored).

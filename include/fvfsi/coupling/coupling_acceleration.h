@@ -1,0 +1,67 @@
+#pragma once
+// The fixed-point iteration of a Dirichlet-Neumann coupling (paper section 3.4, Algorithm 1 and
+// Eqs 30-31). The fluid takes an interface displacement d (at the fluid interface vertices), the
+// solid answers with d~ = S(F(d)); the residual is r = d~ - d, and the next displacement is
+//
+//   fixed relaxation:  d <- d + omega r                                              (31)
+//   Aitken:            the same with omega_k = -omega_(k-1) r_(k-1).(r_k - r_(k-1)) / |r_k - r_(k-1)|^2
+//                      (Kuettler and Wall's dynamic relaxation)
+//   IQN-ILS:           d <- d~ + W c, with c the least-squares solution of V c = -r, where the
+//                      columns of V and W are the differences of r and of d~ between iterations
+//                      (Degroote et al.: an approximate inverse Jacobian of the residual built
+//                      from the iterations seen; columns of earlier time steps may be reused).
+//
+// As in the paper, Aitken and IQN-ILS start every time step with fixed-relaxation iterations
+// (IQN-ILS not when it reuses columns of earlier time steps: they model the Jacobian already).
+// The vectors are the whole interface, replicated on every rank (InterfaceZone), so every rank
+// computes the same update; nothing here communicates.
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deque>
+#include <string>
+#include <vector>
+
+namespace fvfsi
+{
+  struct CouplingParameters
+  {
+    std::string method = "IQN-ILS"; ///< fixed | Aitken | IQN-ILS
+    double relaxation = 0.5;         ///< omega of fixed relaxation and of the first iterations
+    unsigned int fixed_iterations = 2; ///< Aitken / IQN-ILS: fixed iterations that start a step
+    double tolerance = 1e-6;         ///< |r|_2 / |d~|_2 below which a time step has converged
+    unsigned int max_iterations = 100;
+    unsigned int reuse_time_steps = 0; ///< IQN-ILS: keep V, W of this many earlier time steps
+
+    void declare(dealii::ParameterHandler& prm);
+  };
+
+  class CouplingAcceleration
+  {
+  public:
+    explicit CouplingAcceleration(const CouplingParameters& parameters);
+
+    /// Start a time step (Aitken: omega back to the fixed value; IQN-ILS: keep or drop the
+    /// columns of earlier time steps).
+    void new_time_step();
+
+    /// The next interface displacement from the one used, d, and the solid's answer, d~.
+    std::vector<double> next(const std::vector<double>& d, const std::vector<double>& d_tilde);
+
+    /// |r|_2 / max(|d~|_2, tiny) of the last call to next().
+    double relative_residual() const { return last_relative_residual; }
+
+  private:
+    std::vector<double> iqn_ils(const std::vector<double>& d_tilde, const std::vector<double>& r);
+
+    CouplingParameters prm;
+    unsigned int iteration = 0; ///< within the time step
+    double omega;
+    std::vector<double> previous_r, previous_d_tilde;
+    // IQN-ILS columns, newest first, with the time step each came from.
+    std::deque<std::vector<double>> V, W;
+    std::deque<unsigned int> column_step;
+    unsigned int time_step = 0;
+    double last_relative_residual = 0;
+  };
+} // namespace fvfsi
