@@ -83,6 +83,13 @@ namespace fvfsi
         scene.run();
         scene.write_summary(summary);
       }
+      else if (p.run.scene == "fsi")
+      {
+        FsiScene<dim> scene(p.mesh, p.fluid, p.fluid_scene, p.solid_mesh, p.solid, p.solid_scene,
+                            p.fsi, MPI_COMM_WORLD, prm_directory, p.run.output_directory);
+        scene.run();
+        scene.write_summary(summary);
+      }
       (void)out;
     }
   } // namespace
@@ -93,8 +100,10 @@ namespace fvfsi
                       Patterns::Integer(2, 3));
     prm.add_parameter("Scene", scene,
                       "What to run: poisson (the FV core verification problem), solid (the solid "
-                      "solver alone) or fluid (the flow solver alone, on a fixed mesh).",
-                      Patterns::Selection("poisson|solid|fluid"));
+                      "solver alone), fluid (the flow solver alone, on a fixed or moving mesh) or "
+                      "fsi (fluid and solid coupled; the fluid mesh is `Mesh`, the solid's `Solid "
+                      "mesh`).",
+                      Patterns::Selection("poisson|solid|fluid|fsi"));
     prm.add_parameter("Output directory", output_directory,
                       "Directory for VTU/PVTU/PVD files, tables and summary.json (created if needed).");
   }
@@ -111,6 +120,8 @@ namespace fvfsi
     solid_scene.declare(prm);
     fluid.declare(prm);
     fluid_scene.declare(prm);
+    solid_mesh.declare(prm, "Solid mesh");
+    fsi.declare(prm);
   }
 
   void read_parameters(AllParameters& parameters, const std::string& file,

@@ -135,7 +135,7 @@ namespace fvfsi
           q[l] -= column[i] * Q[i][l];
       }
       const double norm = std::sqrt(dot(q, q));
-      if (norm <= 1e-10 * norm0 || norm0 == 0)
+      if (norm <= 1e-2 * norm0 || norm0 == 0)
         continue;
       for (double& x : q)
         x /= norm;

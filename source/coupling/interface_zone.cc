@@ -25,16 +25,20 @@ namespace fvfsi
   } // namespace
 
   template <int dim>
-  InterfaceZone<dim>::InterfaceZone(const FVGeometry<dim>& geometry, const unsigned int patch,
-                                    const std::string& name)
+  InterfaceZone<dim>::InterfaceZone(const FVGeometry<dim>& geometry,
+                                    const std::vector<unsigned int>& patches, const std::string& name)
     : name(name)
     , comm(geometry.comm())
   {
+    const auto on_interface = [&](const FaceGeometry<dim>& face) {
+      return face.kind == FaceKind::boundary &&
+             std::find(patches.begin(), patches.end(), face.patch) != patches.end();
+    };
     // Each owned face as centre, normal, area and vertex coordinates, flattened for all_gather.
     constexpr unsigned int stride = 2 * dim + 1 + n_face_points * dim;
     std::vector<double> mine;
     for (const auto& face : geometry.faces)
-      if (face.kind == FaceKind::boundary && face.patch == patch)
+      if (on_interface(face))
       {
         for (unsigned int d = 0; d < dim; ++d)
           mine.push_back(face.centre[d]);
@@ -50,7 +54,7 @@ namespace fvfsi
       all.insert(all.end(), part.begin(), part.end());
     const unsigned int n = all.size() / stride;
     if (n == 0)
-      throw std::runtime_error("Interface " + name + ": the patch has no boundary face");
+      throw std::runtime_error("Interface " + name + ": its patches have no boundary face");
 
     const auto point_at = [&](const unsigned int i, const unsigned int offset) {
       Point<dim> x;
@@ -94,13 +98,24 @@ namespace fvfsi
     for (unsigned int f = 0; f < geometry.faces.size(); ++f)
     {
       const auto& face = geometry.faces[f];
-      if (face.kind != FaceKind::boundary || face.patch != patch)
+      if (!on_interface(face))
         continue;
       local_face_list.emplace_back(f, face_index.at(key(face.centre)));
       for (const unsigned int v : face.vertices)
         local_point[v] = point_index.at(key(geometry.vertices()[v]));
     }
     local_point_list.assign(local_point.begin(), local_point.end());
+    point_lookup = std::move(point_index);
+  }
+
+  template <int dim>
+  unsigned int InterfaceZone<dim>::point_index(const Point<dim>& x) const
+  {
+    const auto it = point_lookup.find(key(x));
+    if (it == point_lookup.end())
+      throw std::runtime_error("Interface " + name + ": no interface point at " +
+                               Utilities::to_string(x[0]) + ", " + Utilities::to_string(x[1]));
+    return it->second;
   }
 
   template <int dim>

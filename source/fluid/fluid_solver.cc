@@ -354,11 +354,26 @@ namespace fvfsi
         u.set(c, 2 * u_old[c] - u_old2[c]);
       u.update_ghost_values();
     }
+    u_start = u;
+    p_start = p;
+    F_start = F;
+    solves_this_step = 0;
   }
 
   template <int dim>
   void FluidSolver<dim>::solve_current_step()
   {
+    // A repeated solve of the same time step (a coupling iteration, with the mesh moved again)
+    // starts from the same state as the first: PISO with a fixed number of correctors is then
+    // a function of the mesh motion alone, which a quasi-Newton coupling needs (started from the
+    // last iterate, each solve would also converge the step a little further, and the interface
+    // residual would stall at that drift).
+    if (solves_this_step++ > 0)
+    {
+      u = u_start;
+      p = p_start;
+      F = F_start;
+    }
     compute_mesh_fluxes();
     try
     {

@@ -104,7 +104,7 @@ namespace fvfsi
       // A preconditioner kept from an earlier matrix (callers refresh it only every few steps)
       // can stop fitting the matrix: the smoother of an AMG hierarchy reads the new values with
       // old eigenvalue bounds. Rebuild it for this matrix and try once more from the same start.
-      iterations = control.last_step();
+      iterations = control.last_step() == numbers::invalid_unsigned_int ? 0 : control.last_step();
       initialize(matrix); // (re-creates x_trilinos and b_trilinos)
       for (unsigned int i = 0; i < n; ++i)
       {
@@ -118,8 +118,10 @@ namespace fvfsi
       catch (const std::exception&)
       {
         // The solver's own message is a page of deal.II text; the numbers say it all.
+        const unsigned int steps =
+          control.last_step() == numbers::invalid_unsigned_int ? 0 : control.last_step();
         throw std::runtime_error("linear solve of " + what + " failed after " +
-                                 std::to_string(control.last_step()) + " iterations (residual " +
+                                 std::to_string(steps) + " iterations (residual " +
                                  Utilities::to_string(control.last_value()) + ", target " +
                                  Utilities::to_string(control.tolerance()) +
                                  "), also with a preconditioner rebuilt for this matrix");

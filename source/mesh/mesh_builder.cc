@@ -27,11 +27,11 @@ namespace fvfsi
     }
 
     template <int dim>
-    void read_mesh_file(const std::string& file, Triangulation<dim>& tria)
+    void read_mesh_file(const std::string& file, Triangulation<dim>& tria, const std::string& section)
     {
       std::ifstream in(file);
       if (!in)
-        throw std::runtime_error("Mesh/File name: cannot open mesh file `" + file + "`");
+        throw std::runtime_error(section + "/File name: cannot open mesh file `" + file + "`");
       GridIn<dim> grid_in;
       grid_in.attach_triangulation(tria);
       const std::string ext = file.substr(file.find_last_of('.') + 1);
@@ -48,7 +48,7 @@ namespace fvfsi
       }
       catch (const std::exception& e)
       {
-        throw std::runtime_error("Mesh/File name: cannot read `" + file + "`: " + concise_message(e));
+        throw std::runtime_error(section + "/File name: cannot read `" + file + "`: " + concise_message(e));
       }
     }
 
@@ -161,8 +161,9 @@ namespace fvfsi
     if (params.generator == "file")
     {
       if (params.file_name.empty())
-        throw std::runtime_error("Mesh/Generator = file, but Mesh/File name is empty");
-      read_mesh_file(resolve(params.file_name, prm_directory), coarse);
+        throw std::runtime_error(params.section + "/Generator = file, but " + params.section +
+                                 "/File name is empty");
+      read_mesh_file(resolve(params.file_name, prm_directory), coarse, params.section);
     }
     else if (is_benchmark_mesh(params.generator))
       make_benchmark_mesh(params.generator, params.generator_arguments, coarse);
@@ -175,8 +176,8 @@ namespace fvfsi
       }
       catch (const std::exception& e)
       {
-        throw std::runtime_error("Mesh/Generator = `" + params.generator + "` with Mesh/Generator "
-                                 "arguments = `" + params.generator_arguments +
+        throw std::runtime_error(params.section + "/Generator = `" + params.generator + "` with " +
+                                 params.section + "/Generator arguments = `" + params.generator_arguments +
                                  "` failed: " + concise_message(e));
       }
     }

@@ -4,9 +4,10 @@
 
 namespace fvfsi
 {
-  void MeshParameters::declare(dealii::ParameterHandler& prm)
+  void MeshParameters::declare(dealii::ParameterHandler& prm, const std::string& section)
   {
-    prm.enter_subsection("Mesh");
+    this->section = section;
+    prm.enter_subsection(section);
     prm.add_parameter("Generator", generator,
                       "Name of a deal.II GridGenerator function (hyper_cube, subdivided_hyper_rectangle, "
                       "hyper_shell, plate_with_a_hole, channel_with_cylinder, ...), or `file` to read "
@@ -51,6 +52,6 @@ namespace fvfsi
     std::string known;
     for (const auto& [id, n] : patch_names)
       known += " " + n;
-    throw std::runtime_error("unknown patch `" + name + "` (Mesh/Patch names has:" + known + ")");
+    throw std::runtime_error("unknown patch `" + name + "` (" + section + "/Patch names has:" + known + ")");
   }
 } // namespace fvfsi

@@ -69,8 +69,8 @@ Transfer transfer(const parallel::distributed::Triangulation<dim>& fluid, const 
                   const parallel::distributed::Triangulation<dim>& solid, const unsigned int solid_patch)
 {
   const fvfsi::FVGeometry<dim> fluid_geometry(fluid), solid_geometry(solid);
-  const fvfsi::InterfaceZone<dim> fluid_zone(fluid_geometry, fluid_patch, "fluid"),
-    solid_zone(solid_geometry, solid_patch, "solid");
+  const fvfsi::InterfaceZone<dim> fluid_zone(fluid_geometry, {fluid_patch}, "fluid"),
+    solid_zone(solid_geometry, {solid_patch}, "solid");
   Transfer r;
 
   // Tractions: fluid faces -> solid faces; compare the total forces.

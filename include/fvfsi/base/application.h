@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <fvfsi/apps/fluid_scene.h>
+#include <fvfsi/apps/fsi_scene.h>
 #include <fvfsi/apps/poisson.h>
 #include <fvfsi/apps/solid_scene.h>
 #include <fvfsi/mesh/mesh_parameters.h>
@@ -34,6 +35,8 @@ namespace fvfsi
     SolidSceneParameters solid_scene;
     FluidParameters fluid;
     FluidSceneParameters fluid_scene;
+    MeshParameters solid_mesh; ///< FSI: the solid's mesh (subsection `Solid mesh`)
+    FsiSceneParameters fsi;
     dealii::ParameterHandler prm;
   };
 

@@ -5,7 +5,7 @@
 // interface on every rank, each rank interpolates between the two sides on its own, and only the
 // interface data (a few thousand faces) ever crosses ranks.
 //
-// A zone is built once from the locally owned boundary faces of one patch, gathered with
+// A zone is built once from the locally owned boundary faces of some patches, gathered with
 // Utilities::MPI::all_gather. Its faces are numbered by their centres (lexicographically) and its
 // points (the faces' vertices, each once) by their coordinates, so the numbering is the same on
 // every rank and for every number of ranks. Face and point fields of the zone are plain vectors
@@ -23,6 +23,8 @@
 #include <fvfsi/mesh/fv_geometry.h>
 
 #include <array>
+#include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -35,9 +37,10 @@ namespace fvfsi
     /// Vertices per face: 2 in 2D (a segment), 4 in 3D (a quadrilateral).
     static constexpr unsigned int n_face_points = dealii::GeometryInfo<dim>::vertices_per_face;
 
-    /// Gather the boundary faces of `patch` (a boundary id) of `geometry` (collective). Throws if
-    /// the patch has no face.
-    InterfaceZone(const FVGeometry<dim>& geometry, unsigned int patch, const std::string& name);
+    /// Gather the boundary faces of `patches` (boundary ids) of `geometry` (collective). Throws
+    /// if they have no face.
+    InterfaceZone(const FVGeometry<dim>& geometry, const std::vector<unsigned int>& patches,
+                  const std::string& name);
 
     unsigned int n_faces() const { return face_centre.size(); }
     unsigned int n_points() const { return points.size(); }
@@ -60,6 +63,10 @@ namespace fvfsi
       return local_point_list;
     }
 
+    /// The zone point at exactly the coordinates x (as the mesh that built the zone had them);
+    /// throws if there is none.
+    unsigned int point_index(const dealii::Point<dim>& x) const;
+
     /// The zone face field whose entry for each zone face is `local_values[f]` of the rank that
     /// owns face f (local_values indexed like FVGeometry::faces). Collective.
     std::vector<dealii::Tensor<1, dim>>
@@ -74,5 +81,6 @@ namespace fvfsi
   private:
     MPI_Comm comm;
     std::vector<std::pair<unsigned int, unsigned int>> local_face_list, local_point_list;
+    std::map<std::array<double, dim>, unsigned int> point_lookup;
   };
 } // namespace fvfsi

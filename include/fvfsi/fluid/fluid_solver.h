@@ -217,6 +217,11 @@ namespace fvfsi
     std::vector<dealii::Point<dim>> r_f_old, r_f_old2;
     double current_time = 0;
     unsigned int time_step_number = 0;
+    // The state a time step starts from (after extrapolation), for repeated solves of the step.
+    CellVectorField<dim> u_start;
+    CellVector p_start;
+    FaceVector F_start;
+    unsigned int solves_this_step = 0;
 
     // Derived from u and p.
     std::array<CellGradient<dim>, dim> grad_u;

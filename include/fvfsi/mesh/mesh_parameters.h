@@ -27,8 +27,11 @@ namespace fvfsi
     unsigned int distortion_seed = 1;
     /// Names of boundary ids (patches), e.g. `0: left, 1: right`. Ids without a name are `patch_<id>`.
     std::map<unsigned int, std::string> patch_names;
+    /// The .prm subsection these parameters live in (`Mesh`; an FSI scene's solid: `Solid mesh`).
+    std::string section = "Mesh";
 
-    void declare(dealii::ParameterHandler& prm);
+    /// Declare the parameters in subsection `section` (and remember it for messages).
+    void declare(dealii::ParameterHandler& prm, const std::string& section = "Mesh");
     /// Name of the patch with boundary id `id`.
     std::string patch_name(unsigned int id) const;
     /// Boundary id of the patch called `name`; throws a message naming the patch if unknown.

@@ -1,0 +1,116 @@
+#pragma once
+// The fluid-structure interaction scene: the partitioned, strongly coupled Dirichlet-Neumann
+// procedure of the paper's Algorithm 1. Per time step:
+//
+//   1. both solvers move to the next time level; the interface displacement d is predicted;
+//   2. iterate: move the fluid mesh (Laplace mesh motion with the interface vertices at d),
+//      solve the fluid, transfer its wall tractions to the solid faces (Eqs 32-33), solve the
+//      solid, transfer its vertex displacements to the fluid interface vertices (3.5.2), and
+//      update d from the residual r = d~ - d (Eq. 30) by fixed relaxation, Aitken or IQN-ILS,
+//      until |r| <= tolerance |d~|.
+//
+// The fluid and the solid have their own meshes (`Mesh` and `Solid mesh`), decomposed
+// independently over the same ranks; the coupling sees only the two interfaces, gathered whole on
+// every rank (InterfaceZone). Neither solver knows about the other.
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/distributed/tria.h>
+
+#include <fvfsi/apps/fluid_scene.h>
+#include <fvfsi/apps/solid_scene.h>
+#include <fvfsi/coupling/coupling_acceleration.h>
+#include <fvfsi/coupling/face_interpolation.h>
+#include <fvfsi/coupling/interface_zone.h>
+#include <fvfsi/coupling/vertex_projection.h>
+#include <fvfsi/fluid/fluid_solver.h>
+#include <fvfsi/fv/point_probes.h>
+#include <fvfsi/io/summary.h>
+#include <fvfsi/mesh/mesh_motion.h>
+#include <fvfsi/solid/solid_solver.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fvfsi
+{
+  struct FsiSceneParameters
+  {
+    /// Fluid patches of the interface (walls that are also Mesh motion/Moving patches).
+    std::vector<std::string> fluid_interface;
+    /// Solid patches of the interface (Solid/External traction patches).
+    std::vector<std::string> solid_interface;
+    CouplingParameters coupling;
+
+    void declare(dealii::ParameterHandler& prm);
+  };
+
+  struct FsiResults
+  {
+    unsigned int n_time_steps = 0;
+    unsigned int total_coupling_iterations = 0, max_coupling_iterations = 0;
+  };
+
+  template <int dim>
+  class FsiScene
+  {
+  public:
+    FsiScene(const MeshParameters& fluid_mesh, const FluidParameters& fluid_parameters,
+             const FluidSceneParameters& fluid_scene, const MeshParameters& solid_mesh,
+             const SolidParameters& solid_parameters, const SolidSceneParameters& solid_scene,
+             const FsiSceneParameters& fsi_parameters, MPI_Comm comm,
+             const std::string& prm_directory, const std::string& output_directory);
+
+    void run();
+    void write_summary(Summary& summary) const;
+    const FsiResults& results() const { return result; }
+    const SolidSolver<dim>& solid_solver() const { return *solid; }
+    const FluidSolver<dim>& fluid_solver() const { return *fluid; }
+    /// The interface displacement at the fluid interface vertices (zone numbering) [m].
+    const std::vector<dealii::Tensor<1, dim>>& interface_displacement() const { return d; }
+    /// The displacement at solid probe i [m] (collective).
+    dealii::Tensor<1, dim> solid_probe(unsigned int i) const;
+    const PointProbes<dim>& solid_probes() const { return probes; }
+
+  private:
+    void make_grids();
+    /// One time step of Algorithm 1; returns the coupling iterations.
+    unsigned int solve_time_step();
+    /// Move the fluid mesh so that its interface vertices sit at reference + d.
+    void move_fluid_mesh(const std::vector<dealii::Tensor<1, dim>>& displacement);
+    /// Fluid wall tractions -> solid external tractions.
+    void transfer_tractions();
+    /// Solid vertex displacements -> fluid interface vertices (zone numbering).
+    std::vector<dealii::Tensor<1, dim>> solid_interface_displacement() const;
+    void record_time_history(unsigned int iterations, double residual);
+    void output_results() const;
+
+    MPI_Comm comm;
+    MeshParameters fluid_mesh_parameters, solid_mesh_parameters;
+    FluidParameters fluid_parameters;
+    FluidSceneParameters fluid_scene_parameters;
+    SolidParameters solid_parameters;
+    SolidSceneParameters solid_scene_parameters;
+    FsiSceneParameters prm;
+    std::string prm_directory, output_directory;
+    dealii::ConditionalOStream pcout;
+
+    dealii::parallel::distributed::Triangulation<dim> fluid_tria, solid_tria;
+    std::unique_ptr<FVGeometry<dim>> fluid_fv, fluid_reference_fv, solid_fv;
+    std::unique_ptr<FluidSolver<dim>> fluid;
+    std::unique_ptr<MeshMotion<dim>> motion;
+    std::unique_ptr<SolidSolver<dim>> solid;
+    std::unique_ptr<InterfaceZone<dim>> fluid_zone, solid_zone;
+    std::unique_ptr<FaceInterpolation<dim>> traction_map;
+    std::unique_ptr<VertexProjection<dim>> displacement_map;
+    std::unique_ptr<CouplingAcceleration> acceleration;
+    PointProbes<dim> probes;
+
+    std::vector<dealii::Point<dim>> vertices_old;  ///< fluid vertex positions at t^n
+    /// Interface displacement at the fluid interface vertices at t^(n+1), t^n, t^(n-1) [m].
+    std::vector<dealii::Tensor<1, dim>> d, d_old, d_older;
+    std::vector<double> history_t, history_drag, history_lift;
+    FsiResults result;
+  };
+} // namespace fvfsi
