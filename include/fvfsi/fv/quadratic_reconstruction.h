@@ -15,9 +15,9 @@
 // The weights: g_P's error comes from the cubic Taylor remainder of the stencil values, which grows
 // as |r_j|^3, so the far (edge and corner) neighbours should count less than with the 1/|r|^2 of
 // the linear vertex fit. On the distorted meshes of tests/core/poisson_convergence (3D, 32^3 cells,
-// exact cell values) the max error of g_P is 0.032 with 1/|r|^2, 0.026 with 1/|r|^4, 0.021 with
+// exact cell values) the max error of g_P is 0.033 with 1/|r|^2, 0.027 with 1/|r|^4, 0.022 with
 // 1/|r|^6 and 0.018 with 1/|r|^8, and the max error of the quadratic face normal gradient 0.016,
-// 0.012, 0.0088 and 0.0077 (0.0032 with the exact g and H: k . g's error dominates). In the solved
+// 0.012, 0.0088 and 0.0077 (0.0034 with the exact g and H: k . g's error dominates). In the solved
 // Poisson problem the observed orders stop improving beyond 1/|r|^6 (doc/results/core.md).
 //
 // The fit is linear in the data and its matrix depends only on geometry: reinit() stores, per cell
