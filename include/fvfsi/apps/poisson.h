@@ -13,6 +13,7 @@
 #include <fvfsi/fv/gradients.h>
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/linear_solver.h>
+#include <fvfsi/fv/quadratic_reconstruction.h>
 #include <fvfsi/fv/vertex_interpolation.h>
 #include <fvfsi/io/summary.h>
 #include <fvfsi/mesh/fv_geometry.h>
@@ -32,6 +33,9 @@ namespace fvfsi
     std::string exact_gradient = "exp(x)*sin(pi*y); pi*exp(x)*cos(pi*y)";
     std::string source = "(pi^2 - 1)*exp(x)*sin(pi*y)"; ///< s = -div(Gamma grad phi)
     std::vector<std::string> neumann_patches = {"right"};
+    /// The Laplacian's face normal gradient: "linear" (Eq. 19 with vertex Gauss-Green gradients)
+    /// or "quadratic" (with the gradient and Hessian of a quadratic least-squares reconstruction).
+    std::string face_gradient = "linear";
     unsigned int max_correction_iterations = 100;
     double correction_tolerance = 1e-10;
     LinearSolverParameters solver;
@@ -77,6 +81,12 @@ namespace fvfsi
     void setup_system();
     void assemble_system();
     void solve();
+    /// The explicit part of the Laplacian with the current grad (and hessian), added to rhs.
+    void add_correction(CellVector& rhs) const;
+    /// grad (and hessian) from the current phi: vertex Gauss-Green or quadratic reconstruction.
+    void update_gradients();
+    /// n_f . (grad phi)_f of the Laplacian's face normal gradient.
+    double normal_gradient(unsigned int f) const;
     void compute_errors();
 
     MPI_Comm comm;
@@ -88,6 +98,7 @@ namespace fvfsi
     dealii::parallel::distributed::Triangulation<dim> triangulation;
     std::unique_ptr<FVGeometry<dim>> fv;
     std::unique_ptr<VertexInterpolation<dim>> vertex_interpolation;
+    std::unique_ptr<QuadraticReconstruction<dim>> quadratic_reconstruction; ///< quadratic only
     std::unique_ptr<Laplacian<dim>> laplacian;
     dealii::FunctionParser<dim> exact, exact_gradient, source;
 
@@ -96,6 +107,7 @@ namespace fvfsi
     dealii::TrilinosWrappers::SparseMatrix matrix;
     CellVector phi, rhs_fixed;
     CellGradient<dim> grad;
+    CellHessian<dim> hessian; ///< FaceGradient::quadratic only
     std::vector<double> vertex_phi;
     PoissonResults result;
   };
