@@ -373,6 +373,8 @@ namespace fvfsi
       u = u_start;
       p = p_start;
       F = F_start;
+      u.update_ghost_values();
+      p.update_ghost_values();
     }
     compute_mesh_fluxes();
     try
