@@ -26,7 +26,8 @@ SolidSolver<dim>::SolidSolver(const FVGeometry<dim>& geometry,
                               const SolidParameters& parameters)
     : geometry(geometry), parameters(parameters),
       pcout(std::cout, Utilities::MPI::this_mpi_process(geometry.comm()) == 0),
-      vertex_interpolation(geometry), least_squares(geometry), laplacian(geometry), body_force(dim)
+      vertex_interpolation(geometry), least_squares(geometry), gauss_green(geometry),
+      laplacian(geometry), body_force(dim)
 {
   const double E = parameters.E, nu = parameters.nu;
   lame.mu = E / (2 * (1 + nu));
@@ -35,8 +36,20 @@ SolidSolver<dim>::SolidSolver(const FVGeometry<dim>& geometry,
     lame.lambda = 2 * lame.mu * lame.lambda / (lame.lambda + 2 * lame.mu);
   lame.nonlinear = parameters.model == "St. Venant-Kirchhoff";
   initialize_function(body_force, parameters.body_force, "Solid/Body force");
+  for (auto& b : body_force_value)
+    b.assign(geometry.n_owned_cells(), 0.0);
+  present_variant = parameters.variant == "present";
+  jasak_weller_variant = parameters.variant == "Jasak-Weller";
   setup_boundary_conditions(mesh_parameters);
   find_constrained_vertices();
+  for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+  {
+    if (geometry.faces[f].kind == FaceKind::boundary)
+      boundary_faces.push_back(f);
+    if (geometry.faces[f].N == invalid_cell)
+      all_boundary_faces.push_back(f);
+  }
+  evaluate_given_tractions();
 
   for (auto* field : {&u, &u_old, &u_old2, &v_old, &v_old2})
     *field = CellVectorField<dim>(geometry);
@@ -148,7 +161,7 @@ Tensor<2, dim> SolidSolver<dim>::face_gradient(const unsigned int f) const
     const Tensor<2, dim> G_N = cell_gradient(face.N);
     g_n = (u[face.N] - u_P - face.k_N * G_N - face.k_P * G_P) / face.d_n;
   }
-  if (parameters.variant == "present")
+  if (present_variant)
   {
     // Tangential part from the vertex values (Eq. 39), also on boundary faces.
     Tensor<2, dim> G = outer_product(face.n, g_n);
@@ -176,23 +189,32 @@ Tensor<1, dim> SolidSolver<dim>::boundary_traction(const unsigned int f,
   const Tensor<1, dim> area_ratio_n = deformed_area_vector(G, face.n, lame);
   if (condition.type == Type::external_traction)
     return area_ratio_n.norm() * external_traction[f];
-  const auto& fn = *functions[condition.expression];
   if (condition.type == Type::pressure)
-    return -fn.value(face.centre) * area_ratio_n;
-  Tensor<1, dim> t;
-  for (unsigned int d = 0; d < dim; ++d)
-    t[d] = fn.value(face.centre, d);
-  return area_ratio_n.norm() * t;
+    return -given_traction[f][0] * area_ratio_n;
+  return area_ratio_n.norm() * given_traction[f];
+}
+
+template <int dim>
+void SolidSolver<dim>::evaluate_given_tractions()
+{
+  given_traction.resize(geometry.faces.size());
+  for (const unsigned int f : boundary_faces)
+  {
+    const auto& condition = face_condition[f];
+    if (condition.type == Type::pressure)
+      given_traction[f][0] = functions[condition.expression]->value(geometry.faces[f].centre);
+    else if (condition.type == Type::traction)
+      for (unsigned int d = 0; d < dim; ++d)
+        given_traction[f][d] = functions[condition.expression]->value(geometry.faces[f].centre, d);
+  }
 }
 
 template <int dim>
 void SolidSolver<dim>::update_boundary_values()
 {
-  for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+  for (const unsigned int f : boundary_faces)
   {
     const auto& face = geometry.faces[f];
-    if (face.kind != FaceKind::boundary)
-      continue;
     const auto& condition = face_condition[f];
     const Tensor<2, dim> G_P = cell_gradient(face.P);
     const Tensor<1, dim> extrapolated = u[face.P] + face.k_P * G_P;
@@ -217,7 +239,7 @@ void SolidSolver<dim>::update_boundary_values()
           first_piola_traction(G_old, face.n, lame) - lame.K() * (face.n * G_old);
       const Tensor<1, dim> g_n = (boundary_traction(f, G_old) - n_q) / lame.K();
       Tensor<2, dim> T; // tangential part
-      if (parameters.variant == "present")
+      if (present_variant)
         for (unsigned int j = 0; j < dim; ++j)
         {
           const Tensor<1, dim> t = tangential_gradient(face, vertex_u[j]);
@@ -240,27 +262,27 @@ void SolidSolver<dim>::update_gradients()
   // Boundary values (Eqs 23-24), vertex values and gradients depend on each other; a few sweeps
   // make them (nearly) a function of u alone, so that the outer iteration is a fixed-point map
   // of u that Anderson acceleration can model.
+  FaceVector boundary_values(geometry.faces.size()); // only boundary entries are read
   for (unsigned int sweep = 0; sweep < parameters.boundary_sweeps; ++sweep)
   {
     update_boundary_values();
-    FaceVector boundary_values(geometry.faces.size());
     for (unsigned int j = 0; j < dim; ++j)
     {
-      for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+      for (const unsigned int f : all_boundary_faces)
         boundary_values[f] = boundary_u[f][j];
       const CellVector& u_j = u.components[j];
-      if (parameters.variant == "present")
+      if (present_variant)
         vertex_interpolation.interpolate(u_j, boundary_values, vertex_u[j]);
       else if (parameters.variant == "Demirdzic-Muzaferija")
         least_squares.compute(u_j, boundary_values, grad_u[j]);
       else
         gauss_linear_gradient(geometry, u_j, boundary_values, grad_u[j], /*skew_corrected=*/true);
     }
-    if (parameters.variant == "present")
+    if (present_variant)
     {
       impose_vertex_constraints();
       for (unsigned int j = 0; j < dim; ++j)
-        gauss_green_gradient(geometry, vertex_u[j], grad_u[j]);
+        gauss_green.compute(vertex_u[j], grad_u[j]);
     }
   }
 }
@@ -314,7 +336,7 @@ Tensor<1, dim> SolidSolver<dim>::face_force_density(const unsigned int f) const
   const auto& face = geometry.faces[f];
   if (face.N != invalid_cell)
   {
-    if (parameters.variant != "Jasak-Weller")
+    if (!jasak_weller_variant)
       return first_piola_traction(face_gradient(f), face.n, lame);
     // Jasak-Weller: K n.grad u_f (Eq. 19 with interpolated gradients) + n.q of the
     // interpolated cell gradient, as solidDisplacementFoam's laplacian + div(sigmaExp).
@@ -368,8 +390,7 @@ void SolidSolver<dim>::compute_residual(std::array<CellVector, dim>& residual) c
                                              : (9 * u_c - 12 * u1 + 3 * u2) / (4 * dt * dt) -
                                                    (4 * v1 - v2) / (2 * dt); // Eqs 17-18
       }
-      residual[j].local_element(c) +=
-          rho_V * (body_force.value(geometry.centroid[c], j) - acceleration);
+      residual[j].local_element(c) += rho_V * (body_force_value[j][c] - acceleration);
     }
   }
 }
@@ -401,8 +422,12 @@ unsigned int SolidSolver<dim>::solve_time_step()
   ++time_step_number;
   current_time += parameters.time_step;
   body_force.set_time(current_time);
+  for (unsigned int j = 0; j < dim; ++j) // b at the cell centres, once per time step
+    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+      body_force_value[j][c] = body_force.value(geometry.centroid[c], j);
   for (auto& fn : functions)
     fn->set_time(current_time);
+  evaluate_given_tractions();
   const double dt = parameters.time_step;
   const double mass_coefficient =
       !parameters.transient ? 0 : (time_step_number == 1 ? 1 / (dt * dt) : 9 / (4 * dt * dt));

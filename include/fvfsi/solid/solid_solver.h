@@ -94,11 +94,20 @@ namespace fvfsi
     dealii::ConditionalOStream pcout;
     VertexInterpolation<dim> vertex_interpolation;
     LeastSquaresGradient<dim> least_squares;
+    GaussGreenGradient<dim> gauss_green;
     Laplacian<dim> laplacian;
 
     std::vector<FaceCondition> face_condition; ///< per face (boundary faces only)
+    std::vector<unsigned int> boundary_faces;  ///< the faces of kind `boundary`
+    std::vector<unsigned int> all_boundary_faces; ///< kinds `boundary` and `ghost_boundary`
+    /// The traction (pressure: entry 0) expressions at the face centres at the current time, per
+    /// face of a traction or pressure patch (evaluated once per time step, not per sweep).
+    std::vector<dealii::Tensor<1, dim>> given_traction;
+    void evaluate_given_tractions();
     std::vector<std::unique_ptr<dealii::FunctionParser<dim>>> functions;
     dealii::FunctionParser<dim> body_force;
+    std::array<std::vector<double>, dim> body_force_value; ///< b at the owned cell centres, this step
+    bool present_variant = false, jasak_weller_variant = false; ///< parameters.variant, decoded
     std::vector<dealii::Tensor<1, dim>> external_traction;
 
     std::array<dealii::TrilinosWrappers::SparseMatrix, dim> matrix;
