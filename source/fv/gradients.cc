@@ -1,5 +1,8 @@
 #include <fvfsi/fv/gradients.h>
 
+#include <algorithm>
+#include <stdexcept>
+
 namespace fvfsi
 {
   using namespace dealii;
@@ -20,6 +23,58 @@ namespace fvfsi
         sum += face.P == c ? face_sum : -face_sum;
       }
       gradient.set(c, sum / geometry.cell_volume[c]);
+    }
+    gradient.update_ghost_values();
+  }
+
+  template <int dim>
+  GaussGreenGradient<dim>::GaussGreenGradient(const FVGeometry<dim>& geometry) : geometry(geometry)
+  {
+    reinit();
+  }
+
+  template <int dim>
+  void GaussGreenGradient<dim>::reinit()
+  {
+    start = {0};
+    vertex.clear();
+    coefficient.clear();
+    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+    {
+      const auto& cell_vertices = geometry.cell_vertices(c);
+      std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> sum;
+      for (const unsigned int f : geometry.cell_faces(c))
+      {
+        const auto& face = geometry.faces[f];
+        for (unsigned int i = 0; i < face.vertices.size(); ++i)
+        {
+          const auto it = std::find(cell_vertices.begin(), cell_vertices.end(), face.vertices[i]);
+          if (it == cell_vertices.end())
+            throw std::logic_error("GaussGreenGradient: a face vertex that is not a cell vertex "
+                                   "(fvfsi needs conforming meshes)");
+          sum[it - cell_vertices.begin()] +=
+            (face.P == c ? 1.0 : -1.0) * face.gauss_green_weight[i] / geometry.cell_volume[c];
+        }
+      }
+      for (unsigned int i = 0; i < cell_vertices.size(); ++i)
+      {
+        vertex.push_back(cell_vertices[i]);
+        coefficient.push_back(sum[i]);
+      }
+      start.push_back(vertex.size());
+    }
+  }
+
+  template <int dim>
+  void GaussGreenGradient<dim>::compute(const std::vector<double>& vertex_values,
+                                        CellGradient<dim>& gradient) const
+  {
+    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+    {
+      Tensor<1, dim> g;
+      for (unsigned int i = start[c]; i < start[c + 1]; ++i)
+        g += coefficient[i] * vertex_values[vertex[i]];
+      gradient.set(c, g);
     }
     gradient.update_ghost_values();
   }
@@ -129,6 +184,8 @@ namespace fvfsi
                                       CellGradient<2>&, bool);
   template void gauss_linear_gradient(const FVGeometry<3>&, const CellVector&, const FaceVector&,
                                       CellGradient<3>&, bool);
+  template class GaussGreenGradient<2>;
+  template class GaussGreenGradient<3>;
   template class LeastSquaresGradient<2>;
   template class LeastSquaresGradient<3>;
 } // namespace fvfsi

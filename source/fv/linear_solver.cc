@@ -77,8 +77,9 @@ namespace fvfsi
     // preconditioned CG started from round-off noise can break down into NaN).
     TrilinosWrappers::MPI::Vector r(b_trilinos);
     const double r0 = matrix.residual(r, x_trilinos, b_trilinos);
+    const double x_norm = x_trilinos.l2_norm(); // |A| (a pass over the matrix) only if x != 0
     const double round_off =
-      1e-13 * std::max(b_trilinos.l2_norm(), matrix.linfty_norm() * x_trilinos.l2_norm());
+      1e-13 * std::max(b_trilinos.l2_norm(), x_norm == 0 ? 0.0 : matrix.linfty_norm() * x_norm);
     SolverControl control(parameters.max_iterations,
                           std::max({parameters.absolute_tolerance, parameters.reduction * r0, round_off}),
                           false, false);

@@ -55,6 +55,8 @@ namespace fvfsi
   {
     cell_coefficient.resize(stencil_cell.size());
     face_coefficient.resize(stencil_face.size());
+    cell_quadratic.resize(stencil_cell.size());
+    face_quadratic.resize(stencil_face.size());
     std::vector<Point<dim>> r;
     std::vector<double> w;
     for (unsigned int i = 0; i < vertex_list.size(); ++i)
@@ -89,10 +91,22 @@ namespace fvfsi
       for (unsigned int j = 0; j < r.size(); ++j)
       {
         const double coefficient = w[j] / sum_w + w[j] * (a * (r[j] - r0));
+        std::array<double, n_hessian_entries<dim>> quadratic;
+        const Tensor<1, dim> s = r[j] - x_v;
+        unsigned int k = 0;
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = a; b < dim; ++b)
+            quadratic[k++] = coefficient * (a == b ? 0.5 : 1.0) * s[a] * s[b];
         if (j < n_cells)
+        {
           cell_coefficient[cell_start[i] + j] = coefficient;
+          cell_quadratic[cell_start[i] + j] = quadratic;
+        }
         else
+        {
           face_coefficient[face_start[i] + j - n_cells] = coefficient;
+          face_quadratic[face_start[i] + j - n_cells] = quadratic;
+        }
       }
     }
   }
@@ -110,6 +124,25 @@ namespace fvfsi
       for (unsigned int j = face_start[i]; j < face_start[i + 1]; ++j)
         value += face_coefficient[j] * boundary_values[stencil_face[j]];
       vertex_values[vertex_list[i]] = value;
+    }
+  }
+
+  template <int dim>
+  void VertexInterpolation<dim>::subtract_quadratic_terms(const CellHessianField<dim>& hessian,
+                                                          std::vector<double>& vertex_values) const
+  {
+    constexpr unsigned int n_h = n_hessian_entries<dim>;
+    for (unsigned int i = 0; i < vertex_list.size(); ++i)
+    {
+      double sum = 0;
+      for (unsigned int j = cell_start[i]; j < cell_start[i + 1]; ++j)
+        for (unsigned int k = 0; k < n_h; ++k)
+          sum += cell_quadratic[j][k] * hessian.entries[k].local_element(stencil_cell[j]);
+      for (unsigned int j = face_start[i]; j < face_start[i + 1]; ++j)
+        for (unsigned int k = 0; k < n_h; ++k)
+          sum += face_quadratic[j][k] *
+                 hessian.entries[k].local_element(geometry.faces[stencil_face[j]].P);
+      vertex_values[vertex_list[i]] -= sum;
     }
   }
 

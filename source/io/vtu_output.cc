@@ -27,6 +27,11 @@ namespace fvfsi
     subdomain = Utilities::MPI::this_mpi_process(geometry.comm());
     data_out.add_data_vector(subdomain, "rank", DataOut<dim>::type_cell_data);
     data_out.build_patches();
+    // zlib's fastest level: the default (best compression) took about a tenth of a steady solid
+    // run (plate with a hole, 64 082 cells) for a file 17 % smaller (3.6 instead of 4.3 MB).
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    data_out.set_flags(flags);
     const std::string pvtu =
       data_out.write_vtu_with_pvtu_record(directory + "/", base_name, step, geometry.comm(), 4);
     records.emplace_back(time, pvtu);

@@ -1,6 +1,6 @@
 // The plate with a hole (paper section 4.1, Kirsch solution, prm/plate_hole.prm) on the two
 // coarsest meshes of the study in doc/results/plate_hole.md (968 and 4050 cells), with the three
-// face-gradient variants. Asserted:
+// face-gradient variants (as the .prm ships, i.e. present with its Hessian correction). Asserted:
 //  - present: observed order >= 1.9 of the max cell displacement error and of the max hole-face
 //    Cauchy stress error, and a hole-stress error <= 479 Pa already on 968 cells;
 //  - present has smaller errors than Demirdzic-Muzaferija and Jasak-Weller on both meshes.

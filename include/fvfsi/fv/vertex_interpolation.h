@@ -11,6 +11,7 @@
 // cell number, so every rank that sees a vertex sums in the same order and gets the same bits.
 
 #include <fvfsi/fv/cell_gradient.h>
+#include <fvfsi/fv/cell_hessian.h>
 #include <fvfsi/mesh/fv_geometry.h>
 
 #include <vector>
@@ -32,6 +33,14 @@ namespace fvfsi
     void interpolate(const CellVector& phi, const FaceVector& boundary_values,
                      std::vector<double>& vertex_values) const;
 
+    /// The linear fit is exact for linear fields only: for a quadratic its error is
+    /// sum_j a_j 1/2 (r_j - x_v) . H . (r_j - x_v). Subtract that, with H of datum j the Hessian
+    /// of its cell (of a boundary face: of the face's cell; ghost values up to date): the vertex
+    /// values of interpolate() become exact for quadratics if H is exact, with an O(h^3) error if
+    /// H is first-order accurate.
+    void subtract_quadratic_terms(const CellHessianField<dim>& hessian,
+                                  std::vector<double>& vertex_values) const;
+
     /// Triangulation indices of the vertices of locally owned cells.
     const std::vector<unsigned int>& vertices() const { return vertex_list; }
     /// Number of cells in the stencil of the i-th vertex of vertices().
@@ -44,5 +53,8 @@ namespace fvfsi
     std::vector<unsigned int> cell_start, stencil_cell;
     std::vector<unsigned int> face_start, stencil_face;
     std::vector<double> cell_coefficient, face_coefficient;
+    /// Per stencil entry: a_j 1/2 (r_j - x_v)_a (r_j - x_v)_b, entries a <= b as in
+    /// CellHessianField, off-diagonal ones doubled (so that the sum over k with H_k is a_j 1/2 s.H.s).
+    std::vector<std::array<double, n_hessian_entries<dim>>> cell_quadratic, face_quadratic;
   };
 } // namespace fvfsi

@@ -47,6 +47,9 @@ namespace fvfsi
     unsigned int acceleration_depth = 10;
     /// Passes of boundary values + vertex values + gradients per outer iteration.
     unsigned int boundary_sweeps = 8;
+    /// present variant: second-order (Hessian) terms in the vertex values and the extrapolated
+    /// boundary values (an extension of the paper; see solid_solver.cc).
+    bool hessian_correction = false;
 
     std::string fixed_displacement, traction, pressure, symmetry, external_traction;
     LinearSolverParameters solver;

@@ -11,6 +11,12 @@
 // plus the BDF2 mass term. At convergence of these outer iterations u solves Eq. 16 exactly; each
 // linear solve only needs about one order of residual reduction (section 3.3).
 //
+// With `Solid/Hessian correction` (present variant; an extension of the paper) the vertex values
+// and the boundary values extrapolated at traction and symmetry faces also carry their
+// second-order Taylor terms, with per-cell Hessians (DisplacementHessian): without them the max
+// displacement error converges like h^2 log(1/h) where two traction boundaries meet (see
+// update_hessians() in solid_solver.cc).
+//
 // The solver knows nothing about coupling: an external traction per boundary face can be set
 // (set_external_traction) and the displacement read (displacement, boundary_displacement).
 
@@ -20,6 +26,7 @@
 
 #include <fvfsi/fv/anderson_acceleration.h>
 #include <fvfsi/fv/cell_gradient.h>
+#include <fvfsi/fv/cell_hessian.h>
 #include <fvfsi/fv/gradients.h>
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/linear_solver.h>
@@ -92,6 +99,7 @@ namespace fvfsi
     void update_boundary_values();
     void find_constrained_vertices();
     void impose_vertex_constraints();
+    void update_hessians();
     dealii::Tensor<1, dim> boundary_traction(unsigned int f, const dealii::Tensor<2, dim>& G) const;
     dealii::Tensor<1, dim> face_force_density(unsigned int f) const;
     void compute_residual(std::array<CellVector, dim>& residual) const;
@@ -103,11 +111,20 @@ namespace fvfsi
     dealii::ConditionalOStream pcout;
     VertexInterpolation<dim> vertex_interpolation;
     LeastSquaresGradient<dim> least_squares;
+    GaussGreenGradient<dim> gauss_green;
     Laplacian<dim> laplacian;
 
     std::vector<FaceCondition> face_condition; ///< per face (boundary faces only)
+    std::vector<unsigned int> boundary_faces;  ///< the faces of kind `boundary`
+    std::vector<unsigned int> all_boundary_faces; ///< kinds `boundary` and `ghost_boundary`
+    /// The traction (pressure: entry 0) expressions at the face centres at the current time, per
+    /// face of a traction or pressure patch (evaluated once per time step, not per sweep).
+    std::vector<dealii::Tensor<1, dim>> given_traction;
+    void evaluate_given_tractions();
     std::vector<std::unique_ptr<dealii::FunctionParser<dim>>> functions;
     dealii::FunctionParser<dim> body_force;
+    std::array<std::vector<double>, dim> body_force_value; ///< b at the owned cell centres, this step
+    bool present_variant = false, jasak_weller_variant = false; ///< parameters.variant, decoded
     std::vector<dealii::Tensor<1, dim>> external_traction;
 
     std::array<dealii::TrilinosWrappers::SparseMatrix, dim> matrix;
@@ -128,5 +145,14 @@ namespace fvfsi
     /// Vertices on symmetry planes (with the plane's normal) and on displacement boundaries.
     std::vector<std::pair<unsigned int, dealii::Tensor<1, dim>>> symmetry_vertex_normals;
     std::map<unsigned int, const dealii::FunctionParser<dim>*> fixed_vertex_function;
+
+    /// Hessian correction (present variant): per-cell Hessians of u_j and their fit.
+    std::unique_ptr<DisplacementHessian<dim>> cell_hessian;
+    std::array<CellHessianField<dim>, dim> hessian;
+    std::vector<dealii::Tensor<1, dim>> boundary_g_n; ///< n . grad u on traction faces
+    /// From the current Hessians: the quadratic terms of the vertex fit (subtracted from the
+    /// linear fit's vertex values) and of the extrapolation to traction and symmetry faces.
+    std::array<std::vector<double>, dim> vertex_quadratic_term;
+    std::vector<dealii::Tensor<1, dim>> boundary_quadratic_term;
   };
 } // namespace fvfsi
