@@ -1,7 +1,7 @@
 // fvfsi: cell-centred finite-volume fluid-structure interaction on deal.II.
 #include <deal.II/base/mpi.h>
 
-#include <fvfsi/base/application.h>
+#include <fvfsi/app/application.h>
 
 #include <iostream>
 

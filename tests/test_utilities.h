@@ -5,7 +5,7 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fvfsi/apps/poisson.h>
+#include <fvfsi/scenes/poisson.h>
 
 #include <cstdio>
 #include <fstream>
@@ -52,7 +52,7 @@ namespace fvfsi_test
   }
 } // namespace fvfsi_test
 
-#include <fvfsi/base/application.h>
+#include <fvfsi/app/parameters.h>
 
 namespace fvfsi_test
 {

@@ -21,7 +21,7 @@
 //   cg_solve            LinearSolver::solve (CG, reduction 1e-6, from phi = 0)
 //   linear_solve_total  amg_setup + cg_solve (sample by sample)
 //   sweep               one deferred-correction sweep: boundary_values, VertexInterpolation::
-//                       interpolate, gauss_green_gradient, rhs = rhs_fixed, add_correction;
+//                       interpolate, GaussGreenGradient, rhs = rhs_fixed, add_correction;
 //                       its parts are timed separately as sweep_*
 //   assemble_rowwise    (experiment, not library code) the same matrix assembled with one
 //                       matrix.add(row, n, cols, values) call per cell instead of four
@@ -43,7 +43,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <fvfsi/fv/boundary_conditions.h>
-#include <fvfsi/fv/cell_gradient.h>
+#include <fvfsi/fv/cell_fields.h>
 #include <fvfsi/fv/gradients.h>
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/linear_solver.h>
@@ -366,6 +366,7 @@ void run(const Options& o, Report& report)
   double h0 = heap();
   t0 = now();
   VertexInterpolation<dim> vertex_interpolation(*fv);
+  const GaussGreenGradient<dim> gauss_green(*fv);
   report.value("vertex_interp_construct", (now() - t0).wall);
   report.value("mem_vertex_interp_heap", heap() - h0);
   report.timing("vertex_interp_reinit", sample(o.repeats, [&] { vertex_interpolation.reinit(); }));
@@ -409,8 +410,8 @@ void run(const Options& o, Report& report)
 
   // ---- linear solve: CG + AMG, reduction 1e-6, from zero; setup and solve separately ----
   LinearSolverParameters sp;
-  sp.method = "CG";
-  sp.preconditioner = "AMG";
+  sp.method = LinearSolverParameters::Method::cg;
+  sp.preconditioner = LinearSolverParameters::Preconditioner::amg;
   sp.reduction = 1e-6;
   std::unique_ptr<LinearSolver> solver;
   std::vector<Time> setup, solve;
@@ -451,7 +452,7 @@ void run(const Options& o, Report& report)
     const Time s1 = now();
     vertex_interpolation.interpolate(phi, bv, vertex_phi);
     const Time s2 = now();
-    gauss_green_gradient(*fv, vertex_phi, grad);
+    gauss_green.compute(vertex_phi, grad);
     const Time s3 = now();
     rhs = rhs_fixed;
     laplacian.add_correction(gamma, bc, grad, rhs);
@@ -473,7 +474,7 @@ void run(const Options& o, Report& report)
     laplacian.add_correction(gamma, bc, grad, rhs);
     solver->solve(matrix, phi, rhs, "benchmark phi");
     vertex_interpolation.interpolate(phi, laplacian.boundary_values(phi, grad, bc), vertex_phi);
-    gauss_green_gradient(*fv, vertex_phi, grad);
+    gauss_green.compute(vertex_phi, grad);
   }
   double max_error = 0;
   for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)

@@ -53,7 +53,7 @@ for section in "${sections[@]}"; do
         set -- $case
         out=$runs/cfd3_$1_$2
         "$fvfsi" "$repo/prm/turek_hron_cfd3.prm" --set "Mesh/Generator arguments=$1" \
-          --set "Fluid/Time step=$2" --set "Fluid/End time=$3" --set "Fluid scene/Output interval=0" \
+          --set "Time/Time step=$2" --set "Time/End time=$3" --set "Fluid scene/Output interval=0" \
           --set "Output directory=$out" > "$out.log" 2>&1 || { echo "| $1 | failed, see $out.log |"; continue; }
         s=$out/summary.json
         d="d['results']['drag_mean_amplitude_frequency']"; l="d['results']['lift_mean_amplitude_frequency']"

@@ -19,7 +19,7 @@ for diffusivity in "uniform" "inverse distance" "quadratic inverse distance"; do
   for A in 0.04 0.08 0.12 0.16 0.20; do
     dir="$out/${diffusivity// /_}_$A"
     log=$("$build/fvfsi" "$repo/prm/turek_hron_moving_flag.prm" --set "Output directory=$dir" \
-      --set "Fluid/End time=0.125" --set "Mesh motion/Diffusivity=$diffusivity" \
+      --set "Time/End time=0.125" --set "Mesh motion/Diffusivity=$diffusivity" \
       --set "Mesh motion/Moving patches=flag: 0; $A*((x - 0.249)/0.351)^2*sin(2*pi*2*t)" \
       --set "Fluid scene/Output interval=0" 2>&1)
     if [[ -f "$dir/summary.json" ]]; then

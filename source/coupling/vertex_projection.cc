@@ -168,13 +168,14 @@ namespace fvfsi
   }
 
   template <int dim>
-  std::vector<Tensor<1, dim>>
+  InterfaceVector
   VertexProjection<dim>::interpolate(const std::vector<Tensor<1, dim>>& source_values) const
   {
-    std::vector<Tensor<1, dim>> target(face.size());
+    InterfaceVector target(dim * face.size());
     for (unsigned int i = 0; i < face.size(); ++i)
       for (unsigned int j = 0; j < n_face_points; ++j)
-        target[i] += weight[i][j] * source_values[face_points[face[i]][j]];
+        for (unsigned int d = 0; d < dim; ++d)
+          target[i * dim + d] += weight[i][j] * source_values[face_points[face[i]][j]][d];
     return target;
   }
 

@@ -1,5 +1,5 @@
-#include <deal.II/base/utilities.h>
-
+#include <fvfsi/base/patch_list.h>
+#include <fvfsi/base/selection.h>
 #include <fvfsi/fluid/fluid_parameters.h>
 
 #include <stdexcept>
@@ -12,8 +12,8 @@ namespace fvfsi
   {
     // The momentum matrix is not symmetric (convection): GMRES + ILU. A predictor needs little
     // accuracy; the pressure equation decides continuity and is solved tighter.
-    momentum_solver.method = "GMRES";
-    momentum_solver.preconditioner = "ILU";
+    momentum_solver.method = LinearSolverParameters::Method::gmres;
+    momentum_solver.preconditioner = LinearSolverParameters::Preconditioner::ilu;
     momentum_solver.reduction = 1e-3;
     momentum_solver.absolute_tolerance = 1e-15;
     pressure_solver.reduction = 1e-6;
@@ -34,14 +34,13 @@ namespace fvfsi
                       "true: time accurate, BDF2 (first step backward Euler), PISO; false: steady, "
                       "by local pseudo time steps (set by Momentum relaxation) until the solution "
                       "stops changing (the consistent Rhie-Chow flux makes the result independent "
-                      "of the relaxation).");
-    prm.add_parameter("Time step", time_step, "dt [s] (transient).", Patterns::Double(0));
+                      "of the relaxation). The time step and end time are `Time/Time step` and "
+                      "`Time/End time`.");
     prm.add_parameter("Momentum relaxation", momentum_relaxation,
                       "Steady: alpha in (0, 1]; each cell takes the pseudo time step with "
                       "1 / dt_P = a*_P (1 - alpha) / alpha (a*_P its momentum coefficient per unit "
                       "volume), i.e. SIMPLE-style under-relaxation of velocity and face fluxes.",
                       Patterns::Double(0.01, 1));
-    prm.add_parameter("End time", end_time, "[s] (transient only).", Patterns::Double(0));
     prm.add_parameter("Steady tolerance", steady_tolerance,
                       "Steady: stop when max|u^k - u^(k-1)| / max|u| over one pseudo step is below this.",
                       Patterns::Double(0));
@@ -72,12 +71,14 @@ namespace fvfsi
                       "time steps (the matrices change slowly; an older preconditioner only costs "
                       "a few more Krylov iterations, never accuracy).",
                       Patterns::Integer(1));
-    prm.add_parameter("Convection scheme", convection,
-                      "Face velocity of the convection term, by deferred correction on an implicit "
-                      "upwind part: upwind (first order), linear upwind (second order: upwind cell "
-                      "value + its Gauss-Green gradient times (r_f - r_U)), central (second order, "
-                      "unbounded at high cell Reynolds numbers).",
-                      Patterns::Selection("upwind|linear upwind|central"));
+    add_selection(prm, "Convection scheme", convection,
+                  {{"upwind", Convection::upwind},
+                   {"linear upwind", Convection::linear_upwind},
+                   {"central", Convection::central}},
+                  "Face velocity of the convection term, by deferred correction on an implicit "
+                  "upwind part: upwind (first order), linear upwind (second order: upwind cell "
+                  "value + its Gauss-Green gradient times (r_f - r_U)), central (second order, "
+                  "unbounded at high cell Reynolds numbers).");
     const std::string syntax =
       " Syntax: `patch: expression | patch: expression`, vector components separated by `;`.";
     prm.add_parameter("Velocity inlet", velocity_inlet,
@@ -99,18 +100,12 @@ namespace fvfsi
     using Type = FluidBoundaryCondition::Type;
     std::vector<FluidBoundaryCondition> bcs;
     const auto with_values = [&bcs](const std::string& entry, const std::string& name, Type type) {
-      for (const auto& item : Utilities::split_string_list(entry, '|'))
-      {
-        const auto colon = item.find(':');
-        if (colon == std::string::npos)
-          throw std::runtime_error("Fluid/" + name + ": `" + item + "` is not `patch: expression`");
-        bcs.push_back({Utilities::trim(item.substr(0, colon)), type,
-                       Utilities::trim(item.substr(colon + 1))});
-      }
+      for (const auto& [patch, expression] : parse_named_values(entry, "Fluid/" + name))
+        bcs.push_back({patch, type, expression});
     };
     const auto names_only = [&bcs](const std::string& entry, Type type) {
-      for (const auto& item : Utilities::split_string_list(entry, ','))
-        bcs.push_back({item, type, ""});
+      for (const auto& patch : parse_names(entry))
+        bcs.push_back({patch, type, ""});
     };
     with_values(velocity_inlet, "Velocity inlet", Type::velocity_inlet);
     with_values(outlet, "Outlet", Type::outlet);

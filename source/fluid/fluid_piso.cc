@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <fvfsi/fluid/fluid_solver.h>
+#include <fvfsi/fv/deferred_correction.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,8 +18,8 @@ namespace fvfsi
   void FluidSolver<dim>::assemble_momentum()
   {
     TimerOutput::Scope scope(timer_output, "momentum assembly");
-    double c0, c1, c2;
-    time_coefficients(c0, c1, c2);
+    const auto [c0, c1, c2] = time_coefficients();
+    (void)c0;
     momentum.zero();
     for (unsigned int j = 0; j < dim; ++j)
       B_rest[j] = 0;
@@ -68,7 +69,9 @@ namespace fvfsi
           for (unsigned int j = 0; j < dim; ++j)
             B_rest[j].local_element(P) -=
               std::min(phi, 0.0) * u_b[j] +
-              (prm.convection == "upwind" ? 0.0 : std::max(phi, 0.0) * (u_b[j] - u[P][j]));
+              (prm.convection == FluidParameters::Convection::upwind
+                 ? 0.0
+                 : std::max(phi, 0.0) * (u_b[j] - u[P][j]));
           break;
         case Type::symmetry:
           // No flux through the plane; the viscous force of the normal velocity, explicit.
@@ -84,7 +87,6 @@ namespace fvfsi
     // Time derivative of V u (backward Euler / BDF2) and body force: c0_P = c1 V^o/V - c2 V^oo/V
     // (= c0 on a fixed mesh). Steady: a local pseudo time step, c0_P = a*_P (1 - alpha) / alpha
     // from the spatial coefficient a*_P assembled above.
-    (void)c0;
     const double alpha = prm.momentum_relaxation;
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
     {
@@ -106,7 +108,7 @@ namespace fvfsi
   void FluidSolver<dim>::add_convection_correction(const unsigned int f, const double phi)
   {
     // Deferred correction phi (u_f - u_f^upwind) of the higher-order face value.
-    if (prm.convection == "upwind")
+    if (prm.convection == FluidParameters::Convection::upwind)
       return;
     const auto& face = geometry.faces[f];
     const bool from_P = phi >= 0;
@@ -115,7 +117,7 @@ namespace fvfsi
     for (unsigned int j = 0; j < dim; ++j)
     {
       double correction;
-      if (prm.convection == "linear upwind")
+      if (prm.convection == FluidParameters::Convection::linear_upwind)
         correction = to_face * grad_u[j][U];
       else // central
         correction = face.w * u[face.P][j] + (1 - face.w) * u[face.N][j] - u[U][j];
@@ -150,8 +152,7 @@ namespace fvfsi
     TimerOutput::Scope scope(timer_output, "pressure matrix + preconditioner");
     // a_P = A_P / V_P = c0 + a*_P; a*_f = 1 / (1/a*)_f; Gamma_f = 1 / (c0 + a*_f), the same
     // Gamma_f as in the flux correction, so that the corrected fluxes satisfy continuity.
-    double c0, c1, c2;
-    time_coefficients(c0, c1, c2);
+    const auto [c0, c1, c2] = time_coefficients();
     (void)c0;
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
     {
@@ -212,8 +213,8 @@ namespace fvfsi
     h.update_ghost_values();
     // F*_f = (c1 F_f^o - c2 F_f^oo + a*_f S_f . (h / a*)_f) / (c0 + a*_f); on inlets and walls
     // the flux is given.
-    double c0, c1, c2;
-    time_coefficients(c0, c1, c2);
+    const auto [c0, c1, c2] = time_coefficients();
+    (void)c0;
     for (unsigned int f = 0; f < geometry.faces.size(); ++f)
     {
       const auto& face = geometry.faces[f];
@@ -264,30 +265,31 @@ namespace fvfsi
     // Continuity sum_f F_f = 0 with F_f = F*_f - Gamma_f S_f (n.grad p)_f: the Laplacian of p
     // with Gamma = 1/a_f, the divergence of F* as source, Eq. 19's correction explicit and
     // updated by the non-orthogonal correctors.
-    for (unsigned int k = 0; k <= prm.non_orthogonal_correctors; ++k)
+    pressure_rhs = 0;
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
     {
-      pressure_rhs = 0;
-      for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-      {
-        const auto& face = geometry.faces[f];
-        if (face.kind == FaceKind::ghost_boundary)
-          continue;
-        pressure_rhs.local_element(face.P) -= F_star[f];
-        if (face.kind == FaceKind::interior)
-          pressure_rhs.local_element(face.N) += F_star[f];
-        if (face.N == invalid_cell && face_condition[f].type == Type::outlet)
-          pressure_rhs.local_element(face.P) += gamma_p[f] * face.area / face.d_n * boundary_p[f];
-      }
-      laplacian.add_correction(gamma_p, pressure_bc, grad_p, pressure_rhs);
-      pressure_solver.solve(pressure_matrix, p, pressure_rhs, "fluid pressure");
-      if (k < prm.non_orthogonal_correctors)
-      {
-        // The flux correction below must use the gradient of this last solve's correction, so
-        // the gradient is only updated between solves.
+      const auto& face = geometry.faces[f];
+      if (face.kind == FaceKind::ghost_boundary)
+        continue;
+      pressure_rhs.local_element(face.P) -= F_star[f];
+      if (face.kind == FaceKind::interior)
+        pressure_rhs.local_element(face.N) += F_star[f];
+      if (face.N == invalid_cell && face_condition[f].type == Type::outlet)
+        pressure_rhs.local_element(face.P) += gamma_p[f] * face.area / face.d_n * boundary_p[f];
+    }
+    // The flux correction below must use the gradient of the last solve's correction, so the
+    // gradient is only updated between solves.
+    DeferredCorrection control;
+    control.max_iterations = prm.non_orthogonal_correctors + 1;
+    control.update_after_last = false;
+    solve_deferred_correction(
+      control, pressure_solver, pressure_matrix, pressure_rhs, p,
+      [this](CellVector& rhs) { laplacian.add_correction(gamma_p, pressure_bc, grad_p, rhs); },
+      [this]() {
         update_pressure_boundary_values();
         update_pressure_gradient();
-      }
-    }
+      },
+      "fluid pressure");
   }
 
   template <int dim>

@@ -3,11 +3,10 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fvfsi/apps/poisson.h> // initialize_function
 #include <fvfsi/base/exceptions.h>
+#include <fvfsi/base/parsed_function.h>
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/fv/ghost_faces.h>
-#include <fvfsi/fv/gradients.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -19,12 +18,14 @@ namespace fvfsi
   template <int dim>
   FluidSolver<dim>::FluidSolver(const FVGeometry<dim>& geometry,
                                 const MeshParameters& mesh_parameters,
-                                const FluidParameters& parameters)
+                                const FluidParameters& parameters, const TimeControl& clock)
     : geometry(geometry)
     , prm(parameters)
+    , clock(clock)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(geometry.comm()) == 0)
     , timer_output(MPI_COMM_SELF, pcout, TimerOutput::never, TimerOutput::wall_times)
     , vertex_interpolation(geometry)
+    , gauss_green(geometry)
     , laplacian(geometry)
     , body_force(dim)
     , momentum(geometry)
@@ -163,8 +164,7 @@ namespace fvfsi
         {
           // The wall moves with the mesh: the tangential part of its face centre's velocity, the
           // normal part from the swept volume (so that S_f . u_b = F_f^mesh exactly).
-          double c0, c1, c2;
-          time_coefficients(c0, c1, c2);
+          const auto [c0, c1, c2] = time_coefficients();
           const Tensor<1, dim> v_f = c0 * face.centre - c1 * r_f_old[f] + c2 * r_f_old2[f];
           boundary_u[f] = v_f - (v_f * face.n) * face.n + (F_mesh[f] / face.area) * face.n;
           break;
@@ -191,7 +191,7 @@ namespace fvfsi
       for (unsigned int f = 0; f < geometry.faces.size(); ++f)
         boundary_values[f] = boundary_u[f][j];
       vertex_interpolation.interpolate(u.components[j], boundary_values, vertex_u[j]);
-      gauss_green_gradient(geometry, vertex_u[j], grad_u[j]);
+      gauss_green.compute(vertex_u[j], grad_u[j]);
     }
   }
 
@@ -219,28 +219,15 @@ namespace fvfsi
   {
     TimerOutput::Scope scope(timer_output, "pressure gradient");
     vertex_interpolation.interpolate(p, boundary_p, vertex_p);
-    gauss_green_gradient(geometry, vertex_p, grad_p);
+    gauss_green.compute(vertex_p, grad_p);
   }
 
   template <int dim>
-  void FluidSolver<dim>::time_coefficients(double& c0, double& c1, double& c2) const
+  BdfCoefficients FluidSolver<dim>::time_coefficients() const
   {
     // Backward Euler on the first step, BDF2 (Eq. 17) after. (Steady runs use local
     // coefficients, see assemble_momentum.)
-    const double dt = prm.time_step;
-    if (!prm.transient)
-      c0 = c1 = c2 = 0;
-    else if (time_step_number <= 1)
-    {
-      c0 = c1 = 1 / dt;
-      c2 = 0;
-    }
-    else
-    {
-      c0 = 1.5 / dt;
-      c1 = 2 / dt;
-      c2 = 0.5 / dt;
-    }
+    return prm.transient ? clock.bdf() : BdfCoefficients();
   }
 
   template <int dim>
@@ -272,7 +259,8 @@ namespace fvfsi
       throw std::runtime_error("Fluid: the mesh can only move in a transient run (Fluid/Transient)");
     AssertDimension(swept_volume.size(), geometry.faces.size());
     swept = swept_volume;
-    vertex_interpolation.reinit(); // its least-squares weights depend on the geometry
+    vertex_interpolation.reinit(); // their coefficients depend on the geometry
+    gauss_green.reinit();
   }
 
   template <int dim>
@@ -280,8 +268,8 @@ namespace fvfsi
   {
     // BDF2 form of the SCL: F^mesh = c0 dV^n - c2 dV^(n-1), whose sum over a cell's faces is
     // c0 (V - V^o) - c2 (V^o - V^oo) = c0 V - c1 V^o + c2 V^oo (c1 = c0 + c2).
-    double c0, c1, c2;
-    time_coefficients(c0, c1, c2);
+    const auto [c0, c1, c2] = time_coefficients();
+    (void)c1;
     for (unsigned int f = 0; f < geometry.faces.size(); ++f)
       F_mesh[f] = prm.transient ? c0 * swept[f] - c2 * swept_old[f] : 0.0;
   }
@@ -321,9 +309,7 @@ namespace fvfsi
   template <int dim>
   std::string FluidSolver<dim>::step_name() const
   {
-    return prm.transient ? "time step " + std::to_string(time_step_number) + " (t = " +
-                             Utilities::to_string(current_time) + " s)"
-                         : "pseudo time step " + std::to_string(time_step_number);
+    return prm.transient ? clock.step_name() : "pseudo time step " + std::to_string(pseudo_step);
   }
 
   template <int dim>
@@ -337,12 +323,10 @@ namespace fvfsi
   template <int dim>
   void FluidSolver<dim>::begin_time_step()
   {
-    ++time_step_number;
-    current_time += prm.time_step;
-    body_force.set_time(current_time);
+    body_force.set_time(clock.time());
     for (auto& fn : functions)
-      fn->set_time(current_time);
-    if (prm.transient && prm.flux_extrapolation && time_step_number > 1)
+      fn->set_time(clock.time());
+    if (prm.transient && prm.flux_extrapolation && clock.step() > 1)
     {
       // The first outer loop linearises about the extrapolated state: convecting flux
       // F^n + (F^n - F^(n-1)), and velocity 2 u^n - u^(n-1) for the explicit parts (deferred
@@ -363,6 +347,11 @@ namespace fvfsi
   template <int dim>
   void FluidSolver<dim>::solve_current_step()
   {
+    if (!prm.transient)
+    {
+      solve_steady();
+      return;
+    }
     // A repeated solve of the same time step (a coupling iteration, with the mesh moved again)
     // starts from the same state as the first: PISO with a fixed number of correctors is then
     // a function of the mesh motion alone, which a quasi-Newton coupling needs (started from the
@@ -376,6 +365,12 @@ namespace fvfsi
       u.update_ghost_values();
       p.update_ghost_values();
     }
+    solve_piso_step();
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::solve_piso_step()
+  {
     compute_mesh_fluxes();
     try
     {
@@ -442,7 +437,9 @@ namespace fvfsi
     double change = 0;
     for (unsigned int k = 1; k <= prm.max_steady_iterations; ++k)
     {
-      change = solve_time_step();
+      ++pseudo_step;
+      solve_piso_step();
+      change = end_time_step();
       if (k % 100 == 0)
         pcout << "fvfsi: fluid pseudo time step " << k << ": relative change " << change
               << " (tolerance " << prm.steady_tolerance << "), continuity error "
@@ -453,7 +450,8 @@ namespace fvfsi
     throw std::runtime_error("Fluid: the steady solution did not converge in " +
                              std::to_string(prm.max_steady_iterations) +
                              " pseudo time steps (relative change " + Utilities::to_string(change) +
-                             "); raise Fluid/Max steady iterations, or lower Fluid/Momentum relaxation if the change oscillates");
+                             "); raise Fluid/Max steady iterations, or lower Fluid/Momentum "
+                             "relaxation if the change oscillates");
   }
 
   template <int dim>
@@ -520,8 +518,25 @@ namespace fvfsi
     }
     double courant = 0;
     for (unsigned int c = 0; c < outflow.size(); ++c)
-      courant = std::max(courant, prm.time_step * outflow[c] / (2 * geometry.cell_volume[c]));
+      courant = std::max(courant, clock.time_step() * outflow[c] / (2 * geometry.cell_volume[c]));
     return Utilities::MPI::max(courant, geometry.comm());
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::add_output_fields(OutputFields<dim>& fields) const
+  {
+    fields.add_vector("u", [this](const unsigned int c) { return u[c]; });
+    fields.add("p", [this](const unsigned int c) { return prm.rho * p.local_element(c); });
+    fields.add("vorticity", [this](const unsigned int c) {
+      Tensor<2, dim> G; // G[i][j] = d u_j / d x_i
+      for (unsigned int j = 0; j < dim; ++j)
+        for (unsigned int i = 0; i < dim; ++i)
+          G[i][j] = grad_u[j][c][i];
+      if constexpr (dim == 2)
+        return G[0][1] - G[1][0];
+      else
+        return Tensor<1, 3>({G[1][2] - G[2][1], G[2][0] - G[0][2], G[0][1] - G[1][0]}).norm();
+    });
   }
 
   template class FluidSolver<2>;

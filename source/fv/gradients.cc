@@ -8,26 +8,6 @@ namespace fvfsi
   using namespace dealii;
 
   template <int dim>
-  void gauss_green_gradient(const FVGeometry<dim>& geometry, const std::vector<double>& vertex_values,
-                            CellGradient<dim>& gradient)
-  {
-    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
-    {
-      Tensor<1, dim> sum;
-      for (const unsigned int f : geometry.cell_faces(c))
-      {
-        const auto& face = geometry.faces[f];
-        Tensor<1, dim> face_sum;
-        for (unsigned int i = 0; i < face.vertices.size(); ++i)
-          face_sum += face.gauss_green_weight[i] * vertex_values[face.vertices[i]];
-        sum += face.P == c ? face_sum : -face_sum;
-      }
-      gradient.set(c, sum / geometry.cell_volume[c]);
-    }
-    gradient.update_ghost_values();
-  }
-
-  template <int dim>
   GaussGreenGradient<dim>::GaussGreenGradient(const FVGeometry<dim>& geometry) : geometry(geometry)
   {
     reinit();
@@ -176,10 +156,6 @@ namespace fvfsi
     gradient.update_ghost_values();
   }
 
-  template void gauss_green_gradient(const FVGeometry<2>&, const std::vector<double>&,
-                                     CellGradient<2>&);
-  template void gauss_green_gradient(const FVGeometry<3>&, const std::vector<double>&,
-                                     CellGradient<3>&);
   template void gauss_linear_gradient(const FVGeometry<2>&, const CellVector&, const FaceVector&,
                                       CellGradient<2>&, bool);
   template void gauss_linear_gradient(const FVGeometry<3>&, const CellVector&, const FaceVector&,

@@ -9,28 +9,10 @@ namespace fvfsi
 {
   using namespace dealii;
 
-  FaceGradient face_gradient_from_string(const std::string& name)
-  {
-    if (name == "linear")
-      return FaceGradient::linear;
-    if (name == "quadratic")
-      return FaceGradient::quadratic;
-    throw std::invalid_argument("unknown face gradient `" + name + "` (linear or quadratic)");
-  }
-
   template <int dim>
-  Laplacian<dim>::Laplacian(const FVGeometry<dim>& geometry, const FaceGradient face_gradient)
-    : geometry(geometry), kind(face_gradient)
+  Laplacian<dim>::Laplacian(const FVGeometry<dim>& geometry)
+    : geometry(geometry)
   {
-  }
-
-  template <int dim>
-  void Laplacian<dim>::require(const FaceGradient needed, const char* member) const
-  {
-    if (kind != needed)
-      throw std::logic_error(std::string("Laplacian::") + member + (needed == FaceGradient::linear
-                               ? " without a Hessian called on a quadratic-face-gradient Laplacian"
-                               : " with a Hessian called on a linear-face-gradient Laplacian"));
   }
 
   template <int dim>
@@ -92,100 +74,45 @@ namespace fvfsi
   }
 
   template <int dim>
-  void Laplacian<dim>::add_correction(const FaceVector& gamma, const ScalarBoundaryConditions<dim>& bc,
-                                      const CellGradient<dim>& grad, CellVector& rhs) const
+  double Laplacian<dim>::explicit_part(const FaceGeometry<dim>& face, const CellGradient<dim>& grad,
+                                       const CellHessian<dim>* hessian) const
   {
-    require(FaceGradient::linear, "add_correction");
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    if (!hessian) // Eq. 19: exact for linear fields
     {
-      const auto& face = geometry.faces[f];
-      if (face.kind == FaceKind::ghost_boundary ||
-          (face.kind == FaceKind::boundary && bc.type(face) == BoundaryType::neumann))
-        continue;
       double k_dot_grad = face.k_P * grad[face.P];
       if (face.N != invalid_cell)
         k_dot_grad += face.k_N * grad[face.N];
-      // The correction flux Gamma S_f (-(k . grad)/d_fn) leaves P and enters N.
-      const double flux = -gamma[f] * face.area * k_dot_grad / face.d_n;
-      rhs.local_element(face.P) += flux;
-      if (face.kind == FaceKind::interior)
-        rhs.local_element(face.N) -= flux;
+      return -k_dot_grad;
     }
-  }
-
-  template <int dim>
-  double Laplacian<dim>::normal_gradient(const unsigned int f, const CellVector& phi,
-                                         const CellGradient<dim>& grad,
-                                         const ScalarBoundaryConditions<dim>& bc) const
-  {
-    require(FaceGradient::linear, "normal_gradient");
-    const auto& face = geometry.faces[f];
-    const double phi_P = phi.local_element(face.P);
-    if (face.N != invalid_cell)
-      return (phi.local_element(face.N) - phi_P - face.k_N * grad[face.N] - face.k_P * grad[face.P]) /
-             face.d_n;
-    if (bc.type(face) == BoundaryType::neumann)
-      return bc.value[f];
-    return (bc.value[f] - phi_P - face.k_P * grad[face.P]) / face.d_n;
-  }
-
-  template <int dim>
-  FaceVector Laplacian<dim>::boundary_values(const CellVector& phi, const CellGradient<dim>& grad,
-                                             const ScalarBoundaryConditions<dim>& bc) const
-  {
-    require(FaceGradient::linear, "boundary_values");
-    FaceVector values(geometry.faces.size(), 0.0);
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.N != invalid_cell)
-        continue;
-      values[f] = bc.type(face) == BoundaryType::dirichlet
-                    ? bc.value[f]
-                    : phi.local_element(face.P) + face.d_n * bc.value[f] + face.k_P * grad[face.P];
-    }
-    return values;
-  }
-
-  // ----- FaceGradient::quadratic -----
-
-  template <int dim>
-  double Laplacian<dim>::quadratic_correction(const FaceGeometry<dim>& face,
-                                              const CellGradient<dim>& grad,
-                                              const CellHessian<dim>& hessian) const
-  {
     // phi(P') - phi_P: P' = r_P + k_P lies on the normal line, d_Pn = n . (r_f - r_P) behind r_f.
-    const SymmetricTensor<2, dim> H_P = hessian[face.P];
+    const SymmetricTensor<2, dim> H_P = (*hessian)[face.P];
     const double dphi_P = face.k_P * grad[face.P] + 0.5 * (face.k_P * (H_P * face.k_P));
     if (face.N == invalid_cell) // Dirichlet form, d_fn = d_Pn
       return -dphi_P + 0.5 * face.d_n * face.d_n * (face.n * (H_P * face.n));
 
     // phi(N') - phi_N: N' = r_N - k_N lies on the normal line, d_Nn = d_fn - d_Pn ahead of r_f.
-    const SymmetricTensor<2, dim> H_N = hessian[face.N];
+    const SymmetricTensor<2, dim> H_N = (*hessian)[face.N];
     const double dphi_N = -(face.k_N * grad[face.N]) + 0.5 * (face.k_N * (H_N * face.k_N));
-    const double d_Pn = face.n * (face.centre - geometry.centroid[face.P]); // stored r_f, r_P
+    const double d_Pn = face.n * (face.centre - geometry.centroid[face.P]);
     const double d_Nn = face.d_n - d_Pn;
     const SymmetricTensor<2, dim> H_f = face.w * H_P + (1 - face.w) * H_N;
     return dphi_N - dphi_P - 0.5 * face.d_n * (d_Nn - d_Pn) * (face.n * (H_f * face.n));
   }
 
   template <int dim>
-  void Laplacian<dim>::add_correction(const FaceVector& gamma,
-                                      const ScalarBoundaryConditions<dim>& bc,
-                                      const CellGradient<dim>& grad,
-                                      const CellHessian<dim>& hessian, CellVector& rhs) const
+  void Laplacian<dim>::add_correction(const FaceVector& gamma, const ScalarBoundaryConditions<dim>& bc,
+                                      const CellGradient<dim>& grad, CellVector& rhs,
+                                      const CellHessian<dim>* hessian) const
   {
-    require(FaceGradient::quadratic, "add_correction");
     for (unsigned int f = 0; f < geometry.faces.size(); ++f)
     {
       const auto& face = geometry.faces[f];
       if (face.kind == FaceKind::ghost_boundary ||
           (face.kind == FaceKind::boundary && bc.type(face) == BoundaryType::neumann))
         continue;
-      // The explicit flux Gamma S_f (correction / d_fn) enters P (it is on the side of phi_N) and
-      // leaves N.
-      const double flux =
-        gamma[f] * face.area * quadratic_correction(face, grad, hessian) / face.d_n;
+      // The explicit flux Gamma S_f (explicit part / d_fn) enters P (it is on the side of phi_N)
+      // and leaves N.
+      const double flux = gamma[f] * face.area * explicit_part(face, grad, hessian) / face.d_n;
       rhs.local_element(face.P) += flux;
       if (face.kind == FaceKind::interior)
         rhs.local_element(face.N) -= flux;
@@ -195,35 +122,32 @@ namespace fvfsi
   template <int dim>
   double Laplacian<dim>::normal_gradient(const unsigned int f, const CellVector& phi,
                                          const CellGradient<dim>& grad,
-                                         const CellHessian<dim>& hessian,
-                                         const ScalarBoundaryConditions<dim>& bc) const
+                                         const ScalarBoundaryConditions<dim>& bc,
+                                         const CellHessian<dim>* hessian) const
   {
-    require(FaceGradient::quadratic, "normal_gradient");
     const auto& face = geometry.faces[f];
     if (face.N == invalid_cell && bc.type(face) == BoundaryType::neumann)
       return bc.value[f];
     const double phi_other = face.N != invalid_cell ? phi.local_element(face.N) : bc.value[f];
-    return (phi_other - phi.local_element(face.P) + quadratic_correction(face, grad, hessian)) /
-           face.d_n;
+    return (phi_other - phi.local_element(face.P) + explicit_part(face, grad, hessian)) / face.d_n;
   }
 
   template <int dim>
   FaceVector Laplacian<dim>::boundary_values(const CellVector& phi, const CellGradient<dim>& grad,
-                                             const CellHessian<dim>& hessian,
-                                             const ScalarBoundaryConditions<dim>& bc) const
+                                             const ScalarBoundaryConditions<dim>& bc,
+                                             const CellHessian<dim>* hessian) const
   {
-    require(FaceGradient::quadratic, "boundary_values");
     FaceVector values(geometry.faces.size(), 0.0);
     for (unsigned int f = 0; f < geometry.faces.size(); ++f)
     {
       const auto& face = geometry.faces[f];
       if (face.N != invalid_cell)
         continue;
-      // Neumann: solve the Dirichlet form g = (phi_b - phi_P + correction) / d_fn for phi_b.
+      // Neumann: solve the Dirichlet form g = (phi_b - phi_P + explicit part) / d_fn for phi_b.
       values[f] = bc.type(face) == BoundaryType::dirichlet
                     ? bc.value[f]
                     : phi.local_element(face.P) + face.d_n * bc.value[f] -
-                        quadratic_correction(face, grad, hessian);
+                        explicit_part(face, grad, hessian);
     }
     return values;
   }

@@ -1,6 +1,7 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <fvfsi/base/selection.h>
 #include <fvfsi/fv/linear_solver.h>
 
 #include <cmath>
@@ -13,11 +14,12 @@ namespace fvfsi
   void LinearSolverParameters::declare(ParameterHandler& prm, const std::string& name)
   {
     prm.enter_subsection(name);
-    prm.add_parameter("Method", method, "Krylov method: CG for symmetric matrices, GMRES otherwise.",
-                      Patterns::Selection("CG|GMRES"));
-    prm.add_parameter("Preconditioner", preconditioner,
-                      "AMG (Trilinos ML, one V-cycle), ILU (Trilinos Ifpack ILU(0)) or Jacobi.",
-                      Patterns::Selection("AMG|ILU|Jacobi"));
+    add_selection(prm, "Method", method, {{"CG", Method::cg}, {"GMRES", Method::gmres}},
+                  "Krylov method: CG for symmetric matrices, GMRES otherwise.");
+    add_selection(prm, "Preconditioner", preconditioner,
+                  {{"AMG", Preconditioner::amg}, {"ILU", Preconditioner::ilu},
+                   {"Jacobi", Preconditioner::jacobi}},
+                  "AMG (Trilinos ML, one V-cycle), ILU (Trilinos Ifpack ILU(0)) or Jacobi.");
     prm.add_parameter("Residual reduction", reduction,
                       "Stop when the residual has fallen by this factor (per linear solve).",
                       Patterns::Double(0, 1));
@@ -33,7 +35,7 @@ namespace fvfsi
 
   void LinearSolver::initialize(const TrilinosWrappers::SparseMatrix& matrix)
   {
-    if (parameters.preconditioner == "AMG")
+    if (parameters.preconditioner == LinearSolverParameters::Preconditioner::amg)
     {
       auto amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
@@ -44,7 +46,7 @@ namespace fvfsi
       amg->initialize(matrix, data);
       preconditioner = std::move(amg);
     }
-    else if (parameters.preconditioner == "ILU")
+    else if (parameters.preconditioner == LinearSolverParameters::Preconditioner::ilu)
     {
       auto ilu = std::make_unique<TrilinosWrappers::PreconditionILU>();
       ilu->initialize(matrix);
@@ -90,7 +92,7 @@ namespace fvfsi
     if (r0 <= control.tolerance())
       return 0;
     const auto attempt = [&]() {
-      if (parameters.method == "CG")
+      if (parameters.method == LinearSolverParameters::Method::cg)
         TrilinosWrappers::SolverCG(control).solve(matrix, x_trilinos, b_trilinos, *preconditioner);
       else
         TrilinosWrappers::SolverGMRES(control).solve(matrix, x_trilinos, b_trilinos, *preconditioner);

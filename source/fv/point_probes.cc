@@ -2,6 +2,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <fvfsi/base/patch_list.h>
 #include <fvfsi/fv/point_probes.h>
 
 #include <sstream>
@@ -15,14 +16,11 @@ namespace fvfsi
   PointProbes<dim>::PointProbes(const std::string& list, const std::string& parameter)
     : parameter(parameter)
   {
-    for (const auto& item : Utilities::split_string_list(list, '|'))
+    for (const auto& [name, value] : parse_named_values(list, parameter))
     {
-      const auto colon = item.find(':');
-      const auto coordinates =
-        colon == std::string::npos ? std::vector<std::string>()
-                                   : Utilities::split_string_list(item.substr(colon + 1), ',');
-      if (coordinates.size() != dim || Utilities::trim(item.substr(0, colon)).empty())
-        throw std::runtime_error(parameter + ": `" + item + "` is not `name: x, y" +
+      const auto coordinates = Utilities::split_string_list(value, ',');
+      if (coordinates.size() != dim)
+        throw std::runtime_error(parameter + ": `" + name + ": " + value + "` is not `name: x, y" +
                                  (dim == 3 ? ", z`" : "`"));
       Point<dim> p;
       for (unsigned int d = 0; d < dim; ++d)
@@ -32,10 +30,10 @@ namespace fvfsi
         }
         catch (...)
         {
-          throw std::runtime_error(parameter + ": `" + coordinates[d] + "` in `" + item +
-                                   "` is not a number");
+          throw std::runtime_error(parameter + ": `" + coordinates[d] + "` in `" + name + ": " +
+                                   value + "` is not a number");
         }
-      names.push_back(Utilities::trim(item.substr(0, colon)));
+      names.push_back(name);
       points.push_back(p);
     }
   }

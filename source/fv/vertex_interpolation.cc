@@ -91,12 +91,13 @@ namespace fvfsi
       for (unsigned int j = 0; j < r.size(); ++j)
       {
         const double coefficient = w[j] / sum_w + w[j] * (a * (r[j] - r0));
-        std::array<double, n_hessian_entries<dim>> quadratic;
+        std::array<double, CellHessian<dim>::n_components> quadratic;
         const Tensor<1, dim> s = r[j] - x_v;
-        unsigned int k = 0;
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int b = a; b < dim; ++b)
-            quadratic[k++] = coefficient * (a == b ? 0.5 : 1.0) * s[a] * s[b];
+        for (unsigned int k = 0; k < quadratic.size(); ++k)
+        {
+          const auto ab = SymmetricTensor<2, dim>::unrolled_to_component_indices(k);
+          quadratic[k] = coefficient * (ab[0] == ab[1] ? 0.5 : 1.0) * s[ab[0]] * s[ab[1]];
+        }
         if (j < n_cells)
         {
           cell_coefficient[cell_start[i] + j] = coefficient;
@@ -128,20 +129,20 @@ namespace fvfsi
   }
 
   template <int dim>
-  void VertexInterpolation<dim>::subtract_quadratic_terms(const CellHessianField<dim>& hessian,
+  void VertexInterpolation<dim>::subtract_quadratic_terms(const CellHessian<dim>& hessian,
                                                           std::vector<double>& vertex_values) const
   {
-    constexpr unsigned int n_h = n_hessian_entries<dim>;
+    constexpr unsigned int n_h = CellHessian<dim>::n_components;
     for (unsigned int i = 0; i < vertex_list.size(); ++i)
     {
       double sum = 0;
       for (unsigned int j = cell_start[i]; j < cell_start[i + 1]; ++j)
         for (unsigned int k = 0; k < n_h; ++k)
-          sum += cell_quadratic[j][k] * hessian.entries[k].local_element(stencil_cell[j]);
+          sum += cell_quadratic[j][k] * hessian.components[k].local_element(stencil_cell[j]);
       for (unsigned int j = face_start[i]; j < face_start[i + 1]; ++j)
         for (unsigned int k = 0; k < n_h; ++k)
           sum += face_quadratic[j][k] *
-                 hessian.entries[k].local_element(geometry.faces[stencil_face[j]].P);
+                 hessian.components[k].local_element(geometry.faces[stencil_face[j]].P);
       vertex_values[vertex_list[i]] -= sum;
     }
   }

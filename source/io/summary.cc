@@ -45,6 +45,10 @@ namespace fvfsi
   void Summary::set(const std::string& key, const double value) { put(top, key, number(value)); }
   void Summary::set(const std::string& key, const std::string& value) { put(top, key, quoted(value)); }
   void Summary::set_result(const std::string& key, const double value) { put(results, key, number(value)); }
+  void Summary::set_text_result(const std::string& key, const std::string& value)
+  {
+    put(results, key, quoted(value));
+  }
   void Summary::set_result(const std::string& key, const std::vector<double>& values)
   {
     std::string json = "[";
@@ -53,17 +57,31 @@ namespace fvfsi
     put(results, key, json + "]");
   }
 
+  void Summary::set_timing(const std::string& section, const double seconds)
+  {
+    put(timing, section, number(seconds));
+  }
+
   void Summary::write(const std::string& file_name) const
   {
     std::ofstream out(file_name);
     if (!out)
       throw std::runtime_error("cannot write `" + file_name + "`");
+    const auto object = [&out](const std::string& name, const Entries& entries) {
+      out << "  " << quoted(name) << ": {";
+      for (unsigned int i = 0; i < entries.size(); ++i)
+        out << (i ? "," : "") << "\n    " << quoted(entries[i].first) << ": " << entries[i].second;
+      out << "\n  }";
+    };
     out << "{\n";
     for (const auto& [key, json] : top)
       out << "  " << quoted(key) << ": " << json << ",\n";
-    out << "  \"results\": {";
-    for (unsigned int i = 0; i < results.size(); ++i)
-      out << (i ? "," : "") << "\n    " << quoted(results[i].first) << ": " << results[i].second;
-    out << "\n  }\n}\n";
+    if (!timing.empty())
+    {
+      object("timing", timing);
+      out << ",\n";
+    }
+    object("results", results);
+    out << "\n}\n";
   }
 } // namespace fvfsi

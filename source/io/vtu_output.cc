@@ -16,13 +16,13 @@ namespace fvfsi
   }
 
   template <int dim>
-  void VtuOutput<dim>::write(const std::vector<std::pair<std::string, const CellVector*>>& fields,
-                             const unsigned int step, const double time)
+  void VtuOutput<dim>::write(const OutputFields<dim>& fields, const unsigned int step,
+                             const double time)
   {
     DataOut<dim> data_out;
     data_out.attach_dof_handler(geometry.dof_handler());
-    for (const auto& [name, vector] : fields)
-      data_out.add_data_vector(*vector, name, DataOut<dim>::type_dof_data);
+    for (const auto& [name, vector] : fields.fields)
+      data_out.add_data_vector(vector, name, DataOut<dim>::type_dof_data);
     Vector<float> subdomain(geometry.triangulation().n_active_cells());
     subdomain = Utilities::MPI::this_mpi_process(geometry.comm());
     data_out.add_data_vector(subdomain, "rank", DataOut<dim>::type_cell_data);

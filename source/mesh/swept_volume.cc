@@ -62,7 +62,8 @@ namespace fvfsi
   } // namespace
 
   template <int dim>
-  std::vector<double> FVGeometry<dim>::swept_volumes(const std::vector<Point<dim>>& new_x) const
+  std::vector<double> FVGeometry<dim>::swept_volumes(const std::vector<Point<dim>>& old_x,
+                                                     const std::vector<Point<dim>>& new_x) const
   {
     // Positions relative to the face's first old vertex: the swept volume does not depend on the
     // origin (its surface is closed), and a local one keeps the round-off relative to the face.
@@ -75,10 +76,10 @@ namespace fvfsi
     for (unsigned int f = 0; f < faces.size(); ++f)
     {
       const auto& v = faces[f].vertices;
-      const Point<dim> origin = vertex_positions[v[0]];
+      const Point<dim> origin = old_x[v[0]];
       for (unsigned int i = 0; i < nv; ++i)
       {
-        x[i] = Point<dim>(vertex_positions[v[i]] - origin);
+        x[i] = Point<dim>(old_x[v[i]] - origin);
         y[i] = Point<dim>(new_x[v[i]] - origin);
       }
       double flux = position_flux<dim>(polygon, y) - position_flux<dim>(polygon, x);
@@ -95,6 +96,8 @@ namespace fvfsi
     return dV;
   }
 
-  template std::vector<double> FVGeometry<2>::swept_volumes(const std::vector<Point<2>>&) const;
-  template std::vector<double> FVGeometry<3>::swept_volumes(const std::vector<Point<3>>&) const;
+  template std::vector<double> FVGeometry<2>::swept_volumes(const std::vector<Point<2>>&,
+                                                            const std::vector<Point<2>>&) const;
+  template std::vector<double> FVGeometry<3>::swept_volumes(const std::vector<Point<3>>&,
+                                                            const std::vector<Point<3>>&) const;
 } // namespace fvfsi

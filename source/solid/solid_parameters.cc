@@ -1,39 +1,41 @@
-#include <deal.II/base/utilities.h>
-
+#include <fvfsi/base/patch_list.h>
 #include <fvfsi/solid/solid_parameters.h>
-
-#include <stdexcept>
 
 namespace fvfsi
 {
   using namespace dealii;
 
+  const SelectionNames<SolidParameters::Model> SolidParameters::model_names = {
+    {"linear elastic", Model::linear_elastic},
+    {"St. Venant-Kirchhoff", Model::st_venant_kirchhoff}};
+  const SelectionNames<SolidParameters::Variant> SolidParameters::variant_names = {
+    {"present", Variant::present},
+    {"Demirdzic-Muzaferija", Variant::demirdzic_muzaferija},
+    {"Jasak-Weller", Variant::jasak_weller}};
+
   void SolidParameters::declare(ParameterHandler& prm)
   {
     prm.enter_subsection("Solid");
-    prm.add_parameter("Model", model,
-                      "St. Venant-Kirchhoff (finite strain, total Lagrangian, Eqs 4-9) or linear "
-                      "elastic (small strain: q without its nonlinear terms).",
-                      Patterns::Selection("linear elastic|St. Venant-Kirchhoff"));
-    prm.add_parameter("Plane", plane, "2D only: plane strain or plane stress.",
-                      Patterns::Selection("plane strain|plane stress"));
+    add_selection(prm, "Model", model, model_names,
+                  "St. Venant-Kirchhoff (finite strain, total Lagrangian, Eqs 4-9) or linear "
+                  "elastic (small strain: q without its nonlinear terms).");
+    add_selection(prm, "Plane", plane,
+                  {{"plane strain", Plane::strain}, {"plane stress", Plane::stress}},
+                  "2D only: plane strain or plane stress.");
     prm.add_parameter("Young's modulus", E, "E [Pa].", Patterns::Double(0));
     prm.add_parameter("Poisson's ratio", nu, "nu [-].", Patterns::Double(-0.999, 0.4999));
     prm.add_parameter("Density", rho, "rho_0 [kg/m^3] (reference configuration).", Patterns::Double(0));
     prm.add_parameter("Body force", body_force,
                       "b [m/s^2] per unit mass, dim expressions of x, y[, z], t separated by `;`.");
-    prm.add_parameter("Variant", variant,
-                      "Face gradient: present (paper: central normal part + vertex Gauss-Green "
-                      "tangential part, also on boundary faces), Demirdzic-Muzaferija (least-squares "
-                      "cell gradients interpolated to faces), Jasak-Weller (cell-centred Gauss "
-                      "gradients with skew-corrected linear face values, the model of OpenFOAM's "
-                      "solidDisplacementFoam).",
-                      Patterns::Selection("present|Demirdzic-Muzaferija|Jasak-Weller"));
+    add_selection(prm, "Variant", variant, variant_names,
+                  "Face gradient: present (paper: central normal part + vertex Gauss-Green "
+                  "tangential part, also on boundary faces), Demirdzic-Muzaferija (least-squares "
+                  "cell gradients interpolated to faces), Jasak-Weller (cell-centred Gauss "
+                  "gradients with skew-corrected linear face values, the model of OpenFOAM's "
+                  "solidDisplacementFoam).");
     prm.add_parameter("Transient", transient,
                       "true: inertia with the BDF2 (backward) scheme, Eqs 17-18, first step backward "
-                      "Euler; false: steady.");
-    prm.add_parameter("Time step", time_step, "dt [s] (steady: one pseudo step).", Patterns::Double(0));
-    prm.add_parameter("End time", end_time, "[s].", Patterns::Double(0));
+                      "Euler, time step and end time from `Time`; false: steady (one solve).");
     prm.add_parameter("Outer tolerance", outer_tolerance,
                       "Stop the outer (segregated) iterations of a time step when "
                       "max |du| / max |u| is below this.",
@@ -88,18 +90,12 @@ namespace fvfsi
     using Type = SolidBoundaryCondition::Type;
     std::vector<SolidBoundaryCondition> bcs;
     const auto with_values = [&bcs](const std::string& entry, const std::string& name, Type type) {
-      for (const auto& item : Utilities::split_string_list(entry, '|'))
-      {
-        const auto colon = item.find(':');
-        if (colon == std::string::npos)
-          throw std::runtime_error("Solid/" + name + ": `" + item + "` is not `patch: expression`");
-        bcs.push_back({Utilities::trim(item.substr(0, colon)), type,
-                       Utilities::trim(item.substr(colon + 1))});
-      }
+      for (const auto& [patch, expression] : parse_named_values(entry, "Solid/" + name))
+        bcs.push_back({patch, type, expression});
     };
     const auto names_only = [&bcs](const std::string& entry, Type type) {
-      for (const auto& item : Utilities::split_string_list(entry, ','))
-        bcs.push_back({item, type, ""});
+      for (const auto& patch : parse_names(entry))
+        bcs.push_back({patch, type, ""});
     };
     with_values(fixed_displacement, "Fixed displacement", Type::fixed_displacement);
     with_values(traction, "Traction", Type::traction);

@@ -3,7 +3,7 @@
 // missing mesh file, a bad --set override, a bad expression. Each case writes a small .prm file,
 // runs the fvfsi command line in-process (fvfsi::run_application, what the executable's main()
 // calls) and prints the exit code and the message.
-#include <fvfsi/base/application.h>
+#include <fvfsi/app/application.h>
 
 #include "../test_utilities.h"
 

@@ -3,7 +3,7 @@
 //
 // For phi = a + b.x sampled exactly (cell values phi(r_P), boundary values phi(r_f) on every
 // boundary and ghost_boundary face), asserts:
-//  - gauss_green_gradient (Eq. 37) equals b, from the vertex values that VertexInterpolation
+//  - GaussGreenGradient (Eq. 37) equals b, from the vertex values that VertexInterpolation
 //    computes (exact for a linear field) and from the exact vertex values;
 //  - LeastSquaresGradient::compute equals b;
 //  - both on the owned cells and, after the update_ghost_values() these functions do, on the ghost
@@ -100,8 +100,9 @@ void test(std::ostream& out, const std::string& generator, const std::string& ar
 
   // Cell gradients.
   fvfsi::CellGradient<dim> gauss_green(fv), gauss_green_exact_vertices(fv), lsq(fv);
-  fvfsi::gauss_green_gradient(fv, vertex_values, gauss_green);
-  fvfsi::gauss_green_gradient(fv, exact_vertex_values, gauss_green_exact_vertices);
+  const fvfsi::GaussGreenGradient<dim> gauss_green_operator(fv);
+  gauss_green_operator.compute(vertex_values, gauss_green);
+  gauss_green_operator.compute(exact_vertex_values, gauss_green_exact_vertices);
   least_squares.compute(phi, boundary, lsq);
   check_gradient(out, "Gauss-Green gradient (interpolated vertex values)", fv, gauss_green, b,
                  tolerance_interpolated);

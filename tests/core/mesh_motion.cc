@@ -13,9 +13,9 @@
 //  - every rank computes the same vertex positions (mpirun=2 output equals the serial one: the
 //    printed sums over owned cells' vertices, each vertex converged to the solver's 1e-8
 //    reduction, agree to the 4 printed decimals; numdiff's default 1e-6 tolerance applies).
-#include <fvfsi/mesh/mesh_motion.h>
+#include <fvfsi/ale/mesh_motion.h>
 
-#include <fvfsi/apps/poisson.h>
+#include <fvfsi/base/parsed_function.h>
 
 #include "fv_core_test_tools.h"
 
@@ -38,14 +38,16 @@ void run(std::ofstream& out)
   const std::string d_affine = dim == 2 ? "0.1*x - 0.05*y + 0.02*t; 0.03*x + 0.08*y"
                                         : "0.1*x - 0.05*y + 0.02*z + 0.02*t; 0.03*x + 0.08*y - 0.04*z; "
                                           "0.05*x + 0.01*y - 0.06*z";
+  fvfsi::TimeControl clock(1.0, 1.0); // the motion at t = 1 s
+  clock.advance();
   fvfsi::MeshMotionParameters p;
-  p.type = "Laplace";
-  p.diffusivity = "uniform";
+  p.type = fvfsi::MeshMotionParameters::Type::laplace;
+  p.diffusivity = fvfsi::MeshMotionParameters::Diffusivity::uniform;
   p.non_orthogonal_correctors = 30;
   for (const auto& [id, name] : mesh.patch_names)
     p.moving_patches += (p.moving_patches.empty() ? "" : " | ") + name + ": " + d_affine;
-  fvfsi::MeshMotion<dim> affine(reference, mesh, p);
-  const auto x = affine.vertex_positions(1.0);
+  fvfsi::MeshMotion<dim> affine(reference, mesh, p, clock);
+  const auto x = affine.vertex_positions();
   FunctionParser<dim> exact(dim);
   fvfsi::initialize_function(exact, d_affine, "test");
   exact.set_time(1.0);
@@ -62,11 +64,11 @@ void run(std::ofstream& out)
         error / Utilities::MPI::max(scale, MPI_COMM_WORLD), 1e-6);
 
   // One patch translated rigidly, quadratic inverse distance diffusivity.
-  p.diffusivity = "quadratic inverse distance";
+  p.diffusivity = fvfsi::MeshMotionParameters::Diffusivity::quadratic_inverse_distance;
   p.non_orthogonal_correctors = 2;
   p.moving_patches = dim == 2 ? "left: 0.1; 0.05" : "left: 0.1; 0.05; 0.02";
-  fvfsi::MeshMotion<dim> rigid(reference, mesh, p);
-  const auto y = rigid.vertex_positions(1.0);
+  fvfsi::MeshMotion<dim> rigid(reference, mesh, p, clock);
+  const auto y = rigid.vertex_positions();
   Tensor<1, dim> b;
   b[0] = 0.1;
   b[1] = 0.05;
@@ -92,12 +94,12 @@ void run(std::ofstream& out)
   // the patch starts fixed and receives d = b at its vertices; the vertex positions must agree
   // with the expression-driven run to round-off (the same linear systems are solved).
   p.moving_patches = dim == 2 ? "left: 0; 0" : "left: 0; 0; 0";
-  fvfsi::MeshMotion<dim> external(reference, mesh, p);
+  fvfsi::MeshMotion<dim> external(reference, mesh, p, clock);
   std::vector<Tensor<1, dim>> given(reference.vertices().size());
   for (const unsigned int v : external.patch_vertices("left"))
     given[v] = b;
   external.set_patch_displacement("left", given);
-  const auto z = external.vertex_positions(1.0);
+  const auto z = external.vertex_positions();
   double difference = 0;
   for (unsigned int c = 0; c < reference.n_owned_cells(); ++c)
     for (const unsigned int v : reference.cell_vertices(c))

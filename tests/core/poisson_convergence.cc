@@ -25,7 +25,7 @@
 // a value across a rounding boundary. The correction iterations stop when phi changes by less than
 // 1e-10 relative, so what round-off can change (another build, BLAS or compiler) stays orders of
 // magnitude below the granularity of 3 digits (5e-4 relative at worst).
-#include <fvfsi/apps/poisson.h>
+#include <fvfsi/scenes/poisson.h>
 
 #include "../test_utilities.h"
 
@@ -45,7 +45,9 @@ void convergence(std::ofstream& out, const std::string& face_gradient,
   mesh.distortion = 0.25;
   mesh.distort_coarse_mesh = true;
   fvfsi::PoissonParameters parameters = manufactured_poisson<dim>();
-  parameters.face_gradient = face_gradient;
+  parameters.face_gradient = face_gradient == "quadratic"
+                                 ? fvfsi::PoissonParameters::FaceGradient::quadratic
+                                 : fvfsi::PoissonParameters::FaceGradient::linear;
 
   out << dim << "D, " << face_gradient << " face gradient: cells, max cell error, order, "
       << "max face-gradient error, order, L2 face-gradient error, order\n";

@@ -8,7 +8,7 @@
 // gradient (Poisson/Face gradient): the quadratic one reads the Hessian of the ghost neighbours and
 // fits over vertex-neighbour stencils that reach into the ghost layer, so it checks that the ghost
 // layer and the ghost updates of g and H are complete.
-#include <fvfsi/apps/poisson.h>
+#include <fvfsi/scenes/poisson.h>
 
 #include "../test_utilities.h"
 
@@ -45,7 +45,9 @@ void compare(std::ofstream& out, const std::string& face_gradient)
   fvfsi::PoissonParameters parameters = manufactured_poisson<dim>();
   parameters.correction_tolerance = 1e-13;
   parameters.solver.reduction = 1e-10;
-  parameters.face_gradient = face_gradient;
+  parameters.face_gradient = face_gradient == "quadratic"
+                                 ? fvfsi::PoissonParameters::FaceGradient::quadratic
+                                 : fvfsi::PoissonParameters::FaceGradient::linear;
 
   fvfsi::PoissonProblem<dim> parallel(mesh, parameters, MPI_COMM_WORLD);
   parallel.run();

@@ -6,7 +6,7 @@
 // t = 1 s with dt = 1/10, 1/20, 1/40, 1/80 s then measures the time integration alone.
 // Asserted: observed order >= 1.8 on the two finest pairs. Outer iterations converge to 1e-12 so
 // that they do not pollute the error; errors are printed with 3 significant digits.
-#include <fvfsi/apps/solid_scene.h>
+#include <fvfsi/scenes/solid_scene.h>
 
 #include "../test_utilities.h"
 
@@ -24,26 +24,27 @@ double error_at_end(const unsigned int n_steps)
   mesh.distortion = 0.2;
   mesh.patch_names = {{0, "boundary"}};
   fvfsi::SolidParameters solid;
-  solid.model = "linear elastic";
+  solid.model = fvfsi::SolidParameters::Model::linear_elastic;
   solid.E = 1e3;
   solid.nu = 0.3;
   solid.rho = 1;
   solid.transient = true;
-  solid.time_step = 1.0 / n_steps;
-  solid.end_time = 1.0;
   solid.outer_tolerance = 1e-12;
   const std::string a = "0.01", w = "3";
   solid.body_force = a + "*x*" + w + "^2*cos(" + w + "*t); 0";
   solid.fixed_displacement = "boundary: " + a + "*x*(1-cos(" + w + "*t)); 0";
   fvfsi::SolidSceneParameters scene_parameters;
   std::filesystem::create_directories("out");
-  fvfsi::SolidScene<2> scene(mesh, solid, scene_parameters, MPI_COMM_WORLD, ".", "out");
+  fvfsi::TimeParameters time;
+  time.time_step = 1.0 / n_steps;
+  time.end_time = 1.0;
+  fvfsi::SolidScene<2> scene(mesh, solid, scene_parameters, time, MPI_COMM_WORLD, ".", "out");
   scene.run();
   double max_error = 0;
   const auto& fv = scene.geometry();
   for (unsigned int c = 0; c < fv.n_owned_cells(); ++c)
   {
-    const double exact = 0.01 * fv.centroid[c][0] * (1 - std::cos(3.0 * scene.solver().time()));
+    const double exact = 0.01 * fv.centroid[c][0] * (1 - std::cos(3.0 * scene.time().time()));
     max_error = std::max(max_error, std::abs(scene.solver().displacement()[c][0] - exact));
     max_error = std::max(max_error, std::abs(scene.solver().displacement()[c][1]));
   }

@@ -5,7 +5,7 @@
 // too), agrees with a run on rank 0 alone to 1e-8 relative
 // (max |u_np - u_1| / max |u_1|). Outer iterations converge to 1e-12 in both runs, so what is
 // left is round-off and partition-dependent AMG/Anderson differences.
-#include <fvfsi/apps/solid_scene.h>
+#include <fvfsi/scenes/solid_scene.h>
 
 #include "../test_utilities.h"
 
@@ -19,7 +19,7 @@ using Values = std::vector<std::pair<std::array<double, 2>, std::array<double, 2
 Values run(const fvfsi::AllParameters& p, MPI_Comm comm)
 {
   std::filesystem::create_directories("out");
-  fvfsi::SolidScene<2> scene(p.mesh, p.solid, p.solid_scene, comm, ".", "out");
+  fvfsi::SolidScene<2> scene(p.mesh, p.solid, p.solid_scene, p.time, comm, ".", "out");
   scene.run();
   Values values;
   const auto& fv = scene.geometry();
@@ -61,11 +61,11 @@ int main(int argc, char** argv)
   compare(out, "plate with a hole", *shipped_case("plate_hole", {"Solid/Outer tolerance=1e-12"}));
   compare(out, "Turek-Hron flag, 5 BDF2 steps",
           *shipped_case("turek_hron_csm1", {"Mesh/Generator arguments=70: 4", "Solid/Transient=true",
-                                            "Solid/Time step=0.01", "Solid/End time=0.05",
+                                            "Time/Time step=0.01", "Time/End time=0.05",
                                             "Solid/Outer tolerance=1e-12"}));
   compare(out, "Turek-Hron flag, 5 BDF2 steps, Hessian correction",
           *shipped_case("turek_hron_csm1", {"Mesh/Generator arguments=70: 4", "Solid/Transient=true",
-                                            "Solid/Time step=0.01", "Solid/End time=0.05",
+                                            "Time/Time step=0.01", "Time/End time=0.05",
                                             "Solid/Outer tolerance=1e-12",
                                             "Solid/Hessian correction=true"}));
 }

@@ -5,7 +5,7 @@
 //    Cauchy stress error, and a hole-stress error <= 479 Pa already on 968 cells;
 //  - present has smaller errors than Demirdzic-Muzaferija and Jasak-Weller on both meshes.
 // Errors are printed with 3 significant digits (outer iterations converge to 1e-10, far below).
-#include <fvfsi/apps/solid_scene.h>
+#include <fvfsi/scenes/solid_scene.h>
 
 #include "../test_utilities.h"
 
@@ -27,7 +27,7 @@ Errors run(const unsigned int n, const std::string& variant)
                                              "Solid/Variant=" + variant, "Solid/Outer tolerance=1e-10",
                                              "Output directory=out"});
   std::filesystem::create_directories("out");
-  fvfsi::SolidScene<2> scene(p->mesh, p->solid, p->solid_scene, MPI_COMM_WORLD, ".", "out");
+  fvfsi::SolidScene<2> scene(p->mesh, p->solid, p->solid_scene, p->time, MPI_COMM_WORLD, ".", "out");
   scene.run();
   return {static_cast<unsigned int>(scene.geometry().n_global_cells()), scene.results().max_displacement_error,
           scene.results().max_stress_error[0].second};

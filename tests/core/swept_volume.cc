@@ -55,7 +55,7 @@ void run(std::ofstream& out)
       p = moved(p, step);
     const std::vector<double> V_old = fv.cell_volume;
     const double domain_old = total_volume();
-    const std::vector<double> dV = fv.swept_volumes(y);
+    const std::vector<double> dV = fv.swept_volumes(fv.vertices(), y);
     fv.reinit(y);
 
     std::vector<double> net(fv.n_owned_cells(), 0.0);
@@ -86,7 +86,7 @@ void run(std::ofstream& out)
   std::vector<Point<dim>> y = fv.vertices();
   for (auto& p : y)
     p += t;
-  const std::vector<double> dV = fv.swept_volumes(y);
+  const std::vector<double> dV = fv.swept_volumes(fv.vertices(), y);
   double translation_error = 0;
   for (unsigned int f = 0; f < fv.faces.size(); ++f)
     translation_error = std::max(translation_error, std::abs(dV[f] - fv.faces[f].S * t) /

@@ -68,7 +68,9 @@ unsigned int solve(fvfsi::CouplingAcceleration& acceleration, const Model& model
   for (unsigned int k = 1; k <= 400; ++k)
   {
     const std::vector<double> d_tilde = model.solid_answer(d, b);
-    d = acceleration.next(d, d_tilde);
+    const fvfsi::InterfaceVector next = acceleration.next(
+      fvfsi::InterfaceVector(d.begin(), d.end()), fvfsi::InterfaceVector(d_tilde.begin(), d_tilde.end()));
+    d.assign(next.begin(), next.end());
     if (acceleration.relative_residual() <= 1e-10)
       return k;
     if (!(acceleration.relative_residual() < 1e6))
@@ -91,7 +93,9 @@ int main(int argc, char** argv)
   const auto iterations = [&](const std::string& method, const double omega, const unsigned int reuse,
                               const bool second_step) {
     fvfsi::CouplingParameters p;
-    p.method = method;
+    for (const auto& [name, m] : fvfsi::CouplingParameters::method_names)
+      if (name == method)
+        p.method = m;
     p.relaxation = omega;
     p.reuse_time_steps = reuse;
     fvfsi::CouplingAcceleration acceleration(p);

@@ -14,7 +14,7 @@
 // Only verdicts are printed (iteration counts go to stdout), so the np = 1 and np = 2 outputs are
 // one file; with np = 2 the fluid and the solid are decomposed independently, and the interface
 // gathered on both ranks.
-#include <fvfsi/apps/fsi_scene.h>
+#include <fvfsi/scenes/fsi_scene.h>
 
 #include "../test_utilities.h"
 
@@ -40,8 +40,7 @@ Outcome run(const std::string& method, const std::string& relaxation)
   Outcome o;
   try
   {
-    fvfsi::FsiScene<2> scene(p->mesh, p->fluid, p->fluid_scene, p->solid_mesh, p->solid,
-                             p->solid_scene, p->fsi, MPI_COMM_WORLD, ".", "out");
+    fvfsi::FsiScene<2> scene(p->fsi_input(), MPI_COMM_WORLD, ".", "out");
     scene.run();
     o.d = -scene.solid_probe(0)[1];
     o.iterations = scene.results().total_coupling_iterations;

@@ -102,7 +102,8 @@ Transfer transfer(const parallel::distributed::Triangulation<dim>& fluid, const 
   for (unsigned int i = 0; i < fluid_zone.n_points(); ++i)
   {
     const Tensor<1, dim> exact = linear_displacement(fluid_zone.points[i]);
-    r.displacement_error = std::max(r.displacement_error, (u_fluid[i] - exact).norm());
+    r.displacement_error =
+      std::max(r.displacement_error, (fvfsi::point_value<dim>(u_fluid, i) - exact).norm());
     max_u = std::max(max_u, exact.norm());
   }
   r.displacement_error /= max_u;

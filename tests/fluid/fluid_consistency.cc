@@ -15,7 +15,7 @@
 // The differences are printed with 2 digits: deal.II's numdiff (-a 1e-6 -r 1e-8) accepts any
 // change of a value below 1e-6, so the comparison with the .output fails exactly when a
 // difference grows beyond the asserted 1e-6.
-#include <fvfsi/apps/fluid_scene.h>
+#include <fvfsi/scenes/fluid_scene.h>
 
 #include "../test_utilities.h"
 
@@ -40,7 +40,7 @@ Steady run(const std::string& name, std::vector<std::string> overrides, const do
   overrides.push_back("Output directory=out");
   const auto p = shipped_case(name, overrides);
   std::filesystem::create_directories("out");
-  fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, MPI_COMM_WORLD, ".", "out");
+  fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, p->time, MPI_COMM_WORLD, ".", "out");
   scene.run();
   Steady s;
   for (unsigned int c = 0; c < scene.geometry().n_owned_cells(); ++c)

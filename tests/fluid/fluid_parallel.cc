@@ -16,7 +16,7 @@
 // printed, so that NAME.output and NAME.mpirun=2.output are the same file and numdiff's default
 // tolerance is irrelevant. (A mesh of 1921 + 768 cells keeps the np = 2 run near 10 s on a loaded
 // 2-core machine, where every MPI message waits for the other rank to be scheduled.)
-#include <fvfsi/apps/fluid_scene.h>
+#include <fvfsi/scenes/fluid_scene.h>
 
 #include "../test_utilities.h"
 
@@ -38,7 +38,7 @@ struct Run
 Run run(const fvfsi::AllParameters& p, MPI_Comm comm, const std::string& directory)
 {
   std::filesystem::create_directories(directory);
-  fvfsi::FluidScene<2> scene(p.mesh, p.fluid, p.fluid_scene, comm, ".", directory);
+  fvfsi::FluidScene<2> scene(p.mesh, p.fluid, p.fluid_scene, p.time, comm, ".", directory);
   scene.run();
   Run r;
   const auto& fv = scene.geometry();
@@ -114,13 +114,13 @@ int main(int argc, char** argv)
                                           "Fluid pressure solver/Residual reduction=1e-10",
                                           "Fluid scene/Output interval=0",
                                           "Fluid scene/Analysis window=0"};
-  std::vector<std::string> channel = {"Mesh/Generator arguments=12", "Fluid/Time step=0.002",
-                                      "Fluid/End time=0.04", "Fluid/Initial velocity=" + inflow,
+  std::vector<std::string> channel = {"Mesh/Generator arguments=12", "Time/Time step=0.002",
+                                      "Time/End time=0.04", "Fluid/Initial velocity=" + inflow,
                                       "Fluid/Velocity inlet=inlet: " + inflow,
                                       "Fluid scene/Probes=wake: 0.8, 0.2 | above: 0.4, 0.3"};
   channel.insert(channel.end(), tight.begin(), tight.end());
   std::vector<std::string> kovasznay = {"Mesh/Global refinements=1", "Fluid/Transient=true",
-                                        "Fluid/Time step=0.01", "Fluid/End time=0.2"};
+                                        "Time/Time step=0.01", "Time/End time=0.2"};
   kovasznay.insert(kovasznay.end(), tight.begin(), tight.end());
   const std::array<std::unique_ptr<fvfsi::AllParameters>, 2> cases = {
     {shipped_case("turek_hron_cfd3", channel), shipped_case("kovasznay", kovasznay)}};

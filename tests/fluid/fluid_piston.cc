@@ -11,7 +11,7 @@
 //
 // Errors are printed with 3 significant digits, orders with 2 decimals: the linear solves (1e-12)
 // make the values reproducible far below that, numdiff's default tolerance suffices.
-#include <fvfsi/apps/fluid_scene.h>
+#include <fvfsi/scenes/fluid_scene.h>
 
 #include "../test_utilities.h"
 
@@ -27,12 +27,12 @@ std::array<double, 2> study(std::ofstream& out, const std::vector<std::string>& 
   out << "steps  max velocity error  order  max pressure error  order\n";
   for (const unsigned int n : {20u, 40u, 80u, 160u})
   {
-    std::vector<std::string> overrides = {"Fluid/Time step=" + format("%.17g", T / n),
+    std::vector<std::string> overrides = {"Time/Time step=" + format("%.17g", T / n),
                                           "Output directory=out"};
     overrides.insert(overrides.end(), extra.begin(), extra.end());
     const auto p = shipped_case("ale_piston", overrides);
     std::filesystem::create_directories("out");
-    fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, MPI_COMM_WORLD, ".", "out");
+    fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, p->time, MPI_COMM_WORLD, ".", "out");
     scene.run();
     const std::array<double, 2> e = {scene.results().max_velocity_error,
                                      scene.results().max_pressure_error};

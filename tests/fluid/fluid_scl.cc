@@ -16,7 +16,7 @@
 // conservation, not the uniform flow. So the SCL itself is what the first check guards.
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/mesh/mesh_builder.h>
-#include <fvfsi/mesh/mesh_motion.h>
+#include <fvfsi/ale/mesh_motion.h>
 
 #include "../test_utilities.h"
 
@@ -47,20 +47,22 @@ std::array<double, 3> run(const bool swept_volumes)
   dealii::parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
   fvfsi::make_mesh(prm->mesh, tria);
   fvfsi::FVGeometry<dim> fv(tria), reference(tria);
-  fvfsi::FluidSolver<dim> fluid(fv, prm->mesh, prm->fluid);
-  fvfsi::MeshMotion<dim> motion(reference, prm->mesh, prm->fluid_scene.mesh_motion);
+  fvfsi::TimeControl clock(prm->time);
+  fvfsi::FluidSolver<dim> fluid(fv, prm->mesh, prm->fluid, clock);
+  fvfsi::MeshMotion<dim> motion(reference, prm->mesh, prm->fluid_scene.mesh_motion, clock);
   dealii::Tensor<1, dim> U;
   for (unsigned int d = 0; d < dim; ++d)
     U[d] = std::pow(0.5, d);
 
   std::array<double, 3> error{};
-  const double dt = prm->fluid.time_step;
+  const double dt = clock.time_step();
   std::vector<double> V_old = fv.cell_volume, V_old2 = fv.cell_volume;
-  const unsigned int n_steps = std::lround(prm->fluid.end_time / prm->fluid.time_step);
+  const unsigned int n_steps = clock.n_steps();
   for (unsigned int step = 0; step < n_steps; ++step)
   {
-    const auto x = motion.vertex_positions(fluid.time() + prm->fluid.time_step);
-    std::vector<double> dV = fv.swept_volumes(x);
+    clock.advance();
+    const auto x = motion.vertex_positions();
+    std::vector<double> dV = fv.swept_volumes(fv.vertices(), x);
     if (!swept_volumes)
     {
       std::vector<dealii::Point<dim>> old_centres;

@@ -22,7 +22,7 @@
 // Differences are printed with 3 significant digits, orders with 2 decimals: the linear solves
 // (1e-10) and the deterministic distortion make the values reproducible to far better than that,
 // so numdiff's default tolerance is enough.
-#include <fvfsi/apps/fluid_scene.h>
+#include <fvfsi/scenes/fluid_scene.h>
 
 #include "../test_utilities.h"
 
@@ -39,12 +39,12 @@ struct State
 
 State run(const unsigned int n_steps, const std::vector<std::string>& extra)
 {
-  std::vector<std::string> overrides = {"Fluid/Time step=" + format("%.17g", 1.0 / n_steps),
+  std::vector<std::string> overrides = {"Time/Time step=" + format("%.17g", 1.0 / n_steps),
                                         "Output directory=out"};
   overrides.insert(overrides.end(), extra.begin(), extra.end());
   const auto p = shipped_case("taylor_green", overrides);
   std::filesystem::create_directories("out");
-  fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, MPI_COMM_WORLD, ".", "out");
+  fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, p->time, MPI_COMM_WORLD, ".", "out");
   scene.run();
   const auto& fv = scene.geometry();
   State s;

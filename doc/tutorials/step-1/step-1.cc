@@ -89,6 +89,7 @@ private:
 
   std::unique_ptr<FVGeometry<dim>> fv;
   std::unique_ptr<VertexInterpolation<dim>> vertex_interpolation;
+  std::unique_ptr<GaussGreenGradient<dim>> gauss_green;
   std::unique_ptr<Laplacian<dim>> laplacian;
   ExactSolution<dim> exact;
 
@@ -143,6 +144,7 @@ void PoissonFV<dim>::make_grid(const unsigned int n_refinements)
 {
   laplacian.reset(); // the FV objects refer to the old mesh: release them first
   vertex_interpolation.reset();
+  gauss_green.reset();
   fv.reset();
   triangulation.clear();
 
@@ -198,6 +200,7 @@ template <int dim>
 void PoissonFV<dim>::setup_system()
 {
   vertex_interpolation = std::make_unique<VertexInterpolation<dim>>(*fv);
+  gauss_green = std::make_unique<GaussGreenGradient<dim>>(*fv);
   laplacian = std::make_unique<Laplacian<dim>>(*fv);
 
   bc = ScalarBoundaryConditions<dim>();
@@ -265,14 +268,14 @@ void PoissonFV<dim>::assemble_system()
 // it slows down or diverges. The paper notes that each linear solve need not be accurate; we
 // reduce the residual by 1e-8 anyway so that the error after the first solve, the uncorrected
 // solution we report, does not depend on the number of ranks. The solver copies the solution's
-// ghost values; gauss_green_gradient() updates grad's ghosts, which the next correction needs at
+// ghost values; GaussGreenGradient::compute() updates grad's ghosts, which the next correction needs at
 // processor faces.
 template <int dim>
 void PoissonFV<dim>::solve()
 {
   LinearSolverParameters parameters;
-  parameters.method = "CG";
-  parameters.preconditioner = "AMG";
+  parameters.method = LinearSolverParameters::Method::cg;
+  parameters.preconditioner = LinearSolverParameters::Preconditioner::amg;
   parameters.reduction = 1e-8;
   LinearSolver solver(parameters);
   solver.initialize(system_matrix);
@@ -289,7 +292,7 @@ void PoissonFV<dim>::solve()
       uncorrected_error = max_error();
 
     vertex_interpolation->interpolate(phi, laplacian->boundary_values(phi, grad, bc), vertex_phi);
-    gauss_green_gradient(*fv, vertex_phi, grad);
+    gauss_green->compute(vertex_phi, grad);
 
     phi_old -= phi;
     if (phi_old.linfty_norm() < 1e-10 * phi.linfty_norm())
@@ -312,16 +315,16 @@ double PoissonFV<dim>::max_error() const
 
 // @sect4{PoissonFV::output_results}
 // Cell fields go to one .vtu file per rank, a .pvtu record and a .pvd series (VtuOutput), here
-// solution-<cycle>_0000.pvtu. DataOut reads ghost values, so they must be current.
+// solution-<cycle>_0000.pvtu. OutputFields fills each field in the owned cells and updates its
+// ghost values, which DataOut reads.
 template <int dim>
 void PoissonFV<dim>::output_results(const unsigned int cycle) const
 {
-  CellVector error = fv->make_cell_vector();
-  for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
-    error.local_element(c) = phi.local_element(c) - exact.value(fv->centroid[c]);
-  error.update_ghost_values();
-  VtuOutput<dim>(*fv, ".", "solution-" + std::to_string(cycle))
-      .write({{"phi", &phi}, {"error", &error}}, 0, 0.0);
+  OutputFields<dim> fields(*fv);
+  fields.add("phi", [&](const unsigned int c) { return phi.local_element(c); });
+  fields.add("error",
+             [&](const unsigned int c) { return phi.local_element(c) - exact.value(fv->centroid[c]); });
+  VtuOutput<dim>(*fv, ".", "solution-" + std::to_string(cycle)).write(fields, 0, 0.0);
 }
 
 // @sect4{PoissonFV::run}

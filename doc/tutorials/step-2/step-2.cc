@@ -30,7 +30,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <fvfsi/fv/boundary_conditions.h>
-#include <fvfsi/fv/cell_gradient.h>
+#include <fvfsi/fv/cell_fields.h>
 #include <fvfsi/fv/ghost_faces.h>
 #include <fvfsi/fv/gradients.h>
 #include <fvfsi/fv/laplacian.h>
@@ -130,6 +130,7 @@ private:
   parallel::distributed::Triangulation<dim> triangulation;
   std::unique_ptr<FVGeometry<dim>> fv;
   std::unique_ptr<VertexInterpolation<dim>> vertex_interpolation;
+  std::unique_ptr<GaussGreenGradient<dim>> gauss_green;
   std::unique_ptr<Laplacian<dim>> laplacian;
   LameParameters lame;
 
@@ -162,6 +163,7 @@ void PlateWithHole::make_grid(const unsigned int n)
 {
   laplacian.reset();
   vertex_interpolation.reset();
+  gauss_green.reset();
   fv.reset();
   triangulation.clear();
   MeshParameters mesh;
@@ -179,6 +181,7 @@ void PlateWithHole::make_grid(const unsigned int n)
 void PlateWithHole::setup_system()
 {
   vertex_interpolation = std::make_unique<VertexInterpolation<dim>>(*fv);
+  gauss_green = std::make_unique<GaussGreenGradient<dim>>(*fv);
   laplacian = std::make_unique<Laplacian<dim>>(*fv);
   u = CellVectorField<dim>(*fv);
   for (unsigned int j = 0; j < dim; ++j)
@@ -232,8 +235,8 @@ void PlateWithHole::assemble_system()
   bc.value.assign(fv->faces.size(), 0.0);
   CellVector unused_rhs = fv->make_cell_vector();
   LinearSolverParameters parameters;
-  parameters.method = "CG"; // A_j is symmetric and weakly diagonally dominant
-  parameters.preconditioner = "AMG";
+  parameters.method = LinearSolverParameters::Method::cg; // A_j is symmetric, weakly diag. dominant
+  parameters.preconditioner = LinearSolverParameters::Preconditioner::amg;
   parameters.reduction = 0.1; // one order of magnitude per solve (section 3.3)
   for (unsigned int j = 0; j < dim; ++j)
   {
@@ -334,7 +337,7 @@ void PlateWithHole::update_gradients()
       vertex_u[j][v] -= u_n * n[j];
   }
   for (unsigned int j = 0; j < dim; ++j)
-    gauss_green_gradient(*fv, vertex_u[j], grad_u[j]);
+    gauss_green->compute(vertex_u[j], grad_u[j]);
 }
 
 // @sect4{Face gradients and tractions}
@@ -483,20 +486,12 @@ std::pair<double, double> PlateWithHole::errors() const
 // |u_P - u(r_P)|, to plate-<cycle>_0000.pvtu.
 void PlateWithHole::output_results(const unsigned int cycle) const
 {
-  CellVector sigma_yy = fv->make_cell_vector(), error = fv->make_cell_vector();
-  for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
-  {
-    sigma_yy.local_element(c) = cauchy_stress(cell_gradient(c), lame)[1][1];
-    error.local_element(c) = (u[c] - Kirsch::displacement(fv->centroid[c])).norm();
-  }
-  sigma_yy.update_ghost_values();
-  error.update_ghost_values();
-  VtuOutput<dim>(*fv, ".", "plate-" + std::to_string(cycle))
-      .write({{"u_x", &u.components[0]},
-              {"u_y", &u.components[1]},
-              {"sigma_yy", &sigma_yy},
-              {"displacement_error", &error}},
-             0, 0.0);
+  OutputFields<dim> fields(*fv);
+  fields.add_vector("u", [&](const unsigned int c) { return u[c]; });
+  fields.add("sigma_yy", [&](const unsigned int c) { return cauchy_stress(cell_gradient(c), lame)[1][1]; });
+  fields.add("displacement_error",
+             [&](const unsigned int c) { return (u[c] - Kirsch::displacement(fv->centroid[c])).norm(); });
+  VtuOutput<dim>(*fv, ".", "plate-" + std::to_string(cycle)).write(fields, 0, 0.0);
 }
 
 // @sect4{PlateWithHole::run}

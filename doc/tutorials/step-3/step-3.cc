@@ -16,7 +16,7 @@
  * finite-volume method: one value per cell, FE_DGQ(0) in deal.II terms). fvfsi::FluidSolver is
  * the full solver (BDF2, moving meshes, symmetry planes, 3D, outer correctors); this program
  * writes out its core for a fixed 2D mesh with inlet, outlet and walls in one class, with step-1's
- * and step-2's pieces (FVGeometry, VertexInterpolation, gauss_green_gradient, Laplacian,
+ * and step-2's pieces (FVGeometry, VertexInterpolation, GaussGreenGradient, Laplacian,
  * LinearSolver) plus the face-stored matrix FaceMatrix, and then checks that both give the same
  * forces, steady and transient.
  *
@@ -43,7 +43,7 @@
 #include <fvfsi/fluid/fluid_parameters.h>
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/fv/boundary_conditions.h>
-#include <fvfsi/fv/cell_gradient.h>
+#include <fvfsi/fv/cell_fields.h>
 #include <fvfsi/fv/face_matrix.h>
 #include <fvfsi/fv/ghost_faces.h>
 #include <fvfsi/fv/gradients.h>
@@ -135,6 +135,7 @@ private:
   parallel::distributed::Triangulation<dim> triangulation;
   std::unique_ptr<FVGeometry<dim>> fv;
   std::unique_ptr<VertexInterpolation<dim>> vertex_interpolation;
+  std::unique_ptr<GaussGreenGradient<dim>> gauss_green;
   std::unique_ptr<Laplacian<dim>> laplacian;
 
   ScalarBoundaryConditions<dim> velocity_bc, pressure_bc;
@@ -205,6 +206,7 @@ void CylinderFlow::make_grid()
 void CylinderFlow::setup_system()
 {
   vertex_interpolation = std::make_unique<VertexInterpolation<dim>>(*fv);
+  gauss_green = std::make_unique<GaussGreenGradient<dim>>(*fv);
   laplacian = std::make_unique<Laplacian<dim>>(*fv);
   momentum = std::make_unique<FaceMatrix<dim>>(*fv);
   pressure_equation = std::make_unique<FaceMatrix<dim>>(*fv);
@@ -226,12 +228,12 @@ void CylinderFlow::setup_system()
   nu_f.assign(n_faces, nu);
 
   LinearSolverParameters momentum_parameters, pressure_parameters;
-  momentum_parameters.method = "GMRES";
-  momentum_parameters.preconditioner = "ILU";
+  momentum_parameters.method = LinearSolverParameters::Method::gmres;
+  momentum_parameters.preconditioner = LinearSolverParameters::Preconditioner::ilu;
   momentum_parameters.reduction = 1e-3;
   momentum_parameters.absolute_tolerance = 1e-15;
-  pressure_parameters.method = "CG";
-  pressure_parameters.preconditioner = "AMG";
+  pressure_parameters.method = LinearSolverParameters::Method::cg;
+  pressure_parameters.preconditioner = LinearSolverParameters::Preconditioner::amg;
   pressure_parameters.reduction = 1e-6;
   pressure_parameters.absolute_tolerance = 1e-15;
   momentum_solver = std::make_unique<LinearSolver>(momentum_parameters);
@@ -302,7 +304,7 @@ void CylinderFlow::update_velocity_gradients()
     for (unsigned int f = 0; f < fv->faces.size(); ++f)
       values[f] = boundary_u[f][j];
     vertex_interpolation->interpolate(u.components[j], values, vertex_u[j]);
-    gauss_green_gradient(*fv, vertex_u[j], grad_u[j]);
+    gauss_green->compute(vertex_u[j], grad_u[j]);
   }
 }
 
@@ -321,7 +323,7 @@ void CylinderFlow::update_pressure_boundary_values()
 void CylinderFlow::update_pressure_gradient()
 {
   vertex_interpolation->interpolate(p, boundary_p, vertex_p);
-  gauss_green_gradient(*fv, vertex_p, grad_p);
+  gauss_green->compute(vertex_p, grad_p);
 }
 
 // @sect4{CylinderFlow::assemble_momentum}
@@ -775,24 +777,15 @@ Tensor<1, dim> CylinderFlow::force() const
 // cylinder-transient_0000.pvtu.
 void CylinderFlow::output_results() const
 {
-  CellVector pressure = fv->make_cell_vector(), vorticity = fv->make_cell_vector();
-  for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
-  {
-    pressure.local_element(c) = rho * p.local_element(c);
-    vorticity.local_element(c) = grad_u[1][c][0] - grad_u[0][c][1];
-  }
-  pressure.update_ghost_values();
-  vorticity.update_ghost_values();
+  OutputFields<dim> fields(*fv);
+  fields.add_vector("u", [&](const unsigned int c) { return u[c]; });
+  fields.add("p", [&](const unsigned int c) { return rho * p.local_element(c); });
+  fields.add("vorticity", [&](const unsigned int c) { return grad_u[1][c][0] - grad_u[0][c][1]; });
   const std::string name =
       dt > 0 ? "cylinder-transient"
              : std::string(consistent ? "cylinder-" : "cylinder-classic-") +
                    std::to_string(static_cast<int>(100 * alpha + 0.5));
-  VtuOutput<dim>(*fv, ".", name)
-      .write({{"u_x", &u.components[0]},
-              {"u_y", &u.components[1]},
-              {"p", &pressure},
-              {"vorticity", &vorticity}},
-             0, 0.0);
+  VtuOutput<dim>(*fv, ".", name).write(fields, 0, 0.0);
 }
 
 // @sect4{CylinderFlow::run}
@@ -852,17 +845,16 @@ Tensor<1, dim> library_force(const unsigned int n, const double U, const double 
   prm.rho = rho;
   prm.nu = nu;
   prm.transient = dt > 0;
-  prm.time_step = dt;
   prm.momentum_relaxation = alpha;
   prm.steady_tolerance = 1e-9;
-  prm.convection = "linear upwind";
+  prm.convection = FluidParameters::Convection::linear_upwind;
   prm.velocity_inlet =
       "inlet: 1.5*" + Utilities::to_string(U) + "*4*y*(0.41-y)/0.41^2; 0";
   prm.outlet = "outlet: 0";
   prm.wall = "walls, cylinder, flag";
   // FluidParameters::declare() sets these defaults for .prm files; set them here.
-  prm.momentum_solver.method = "GMRES";
-  prm.momentum_solver.preconditioner = "ILU";
+  prm.momentum_solver.method = LinearSolverParameters::Method::gmres;
+  prm.momentum_solver.preconditioner = LinearSolverParameters::Preconditioner::ilu;
   prm.momentum_solver.reduction = 1e-3;
   prm.momentum_solver.absolute_tolerance = 1e-15;
   prm.pressure_solver.reduction = 1e-6;
@@ -872,21 +864,23 @@ Tensor<1, dim> library_force(const unsigned int n, const double U, const double 
   // this program linearises about u^n, F^n, as OpenFOAM's PISO does. Compare like with like:
   prm.flux_extrapolation = false;
 
-  FluidSolver<dim> fluid(fv, mesh, prm);
+  TimeControl clock(dt > 0 ? dt : 1.0, dt * n_steps); // the scene's clock (steady: unused)
+  FluidSolver<dim> fluid(fv, mesh, prm, clock);
   const auto force = [&]() { return fluid.patch_force(cylinder) + fluid.patch_force(flag); };
   if (dt == 0)
     n_steps = fluid.solve_steady();
   else
     for (unsigned int k = 1; k <= n_steps; ++k)
     {
+      clock.advance();
       fluid.solve_time_step();
       if (k % interval == 0 && history != nullptr)
       {
         const Tensor<1, dim> f = force();
-        history->push_back(std::array<double, 3>{{fluid.time(), f[0], f[1]}});
+        history->push_back(std::array<double, 3>{{clock.time(), f[0], f[1]}});
         const double courant = fluid.courant_number(); // collective
         if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-          std::cout << "  fvfsi: t = " << fluid.time() << " s, Courant number "
+          std::cout << "  fvfsi: t = " << clock.time() << " s, Courant number "
                     << courant << std::endl;
       }
     }

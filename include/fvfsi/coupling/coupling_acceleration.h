@@ -13,20 +13,30 @@
 //
 // As in the paper, Aitken and IQN-ILS start every time step with fixed-relaxation iterations
 // (IQN-ILS not when it reuses columns of earlier time steps: they model the Jacobian already).
-// The vectors are the whole interface, replicated on every rank (InterfaceZone), so every rank
-// computes the same update; nothing here communicates.
+// The vectors are the whole interface, replicated on every rank (InterfaceZone's InterfaceVector),
+// so every rank computes the same update; nothing here communicates. The least-squares model of
+// IQN-ILS is the one of the solid's Anderson acceleration (fv/least_squares_model.h).
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <deque>
+#include <fvfsi/base/selection.h>
+#include <fvfsi/coupling/interface_zone.h>
+#include <fvfsi/fv/least_squares_model.h>
+
 #include <string>
-#include <vector>
 
 namespace fvfsi
 {
   struct CouplingParameters
   {
-    std::string method = "IQN-ILS"; ///< fixed | Aitken | IQN-ILS
+    enum class Method
+    {
+      fixed,  ///< fixed relaxation (Eq. 31)
+      aitken, ///< dynamic relaxation
+      iqn_ils ///< interface quasi-Newton, least-squares inverse Jacobian
+    };
+    static const SelectionNames<Method> method_names;
+    Method method = Method::iqn_ils;
     double relaxation = 0.5;         ///< omega of fixed relaxation and of the first iterations
     unsigned int fixed_iterations = 2; ///< Aitken / IQN-ILS: fixed iterations that start a step
     double tolerance = 1e-6;         ///< |r|_2 / |d~|_2 below which a time step has converged
@@ -46,21 +56,18 @@ namespace fvfsi
     void new_time_step();
 
     /// The next interface displacement from the one used, d, and the solid's answer, d~.
-    std::vector<double> next(const std::vector<double>& d, const std::vector<double>& d_tilde);
+    InterfaceVector next(const InterfaceVector& d, const InterfaceVector& d_tilde);
 
     /// |r|_2 / max(|d~|_2, tiny) of the last call to next().
     double relative_residual() const { return last_relative_residual; }
 
   private:
-    std::vector<double> iqn_ils(const std::vector<double>& d_tilde, const std::vector<double>& r);
-
     CouplingParameters prm;
     unsigned int iteration = 0; ///< within the time step
     double omega;
-    std::vector<double> previous_r, previous_d_tilde;
-    // IQN-ILS columns, newest first, with the time step each came from.
-    std::deque<std::vector<double>> V, W;
-    std::deque<unsigned int> column_step;
+    InterfaceVector previous_r, previous_d_tilde;
+    /// IQN-ILS: columns V (differences of r) and W (of d~), tagged with their time step.
+    LeastSquaresModel<InterfaceVector> model;
     unsigned int time_step = 0;
     double last_relative_residual = 0;
   };

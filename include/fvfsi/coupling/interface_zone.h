@@ -19,6 +19,7 @@
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/lac/vector.h>
 
 #include <fvfsi/mesh/fv_geometry.h>
 
@@ -30,6 +31,21 @@
 
 namespace fvfsi
 {
+  /// A vector field on the points of an interface zone, whole on every rank: dim values per
+  /// point, component d of point i at i dim + d (the interface displacement d of Algorithm 1, the
+  /// vectors of the coupling acceleration).
+  using InterfaceVector = dealii::Vector<double>;
+
+  /// Point i of an interface vector.
+  template <int dim>
+  dealii::Tensor<1, dim> point_value(const InterfaceVector& v, const unsigned int i)
+  {
+    dealii::Tensor<1, dim> x;
+    for (unsigned int d = 0; d < dim; ++d)
+      x[d] = v[i * dim + d];
+    return x;
+  }
+
   template <int dim>
   class InterfaceZone
   {

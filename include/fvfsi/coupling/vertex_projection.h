@@ -22,9 +22,9 @@ namespace fvfsi
   public:
     VertexProjection(const InterfaceZone<dim>& source, const InterfaceZone<dim>& target);
 
-    /// The target point field from the source point field.
-    std::vector<dealii::Tensor<1, dim>>
-    interpolate(const std::vector<dealii::Tensor<1, dim>>& source_values) const;
+    /// The target point field (an interface vector of the target zone) from the source point
+    /// field.
+    InterfaceVector interpolate(const std::vector<dealii::Tensor<1, dim>>& source_values) const;
 
     /// The largest distance between a target point and its projection [m]: the geometric gap
     /// between the two discretised surfaces.

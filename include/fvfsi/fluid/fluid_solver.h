@@ -58,21 +58,30 @@
 // outer loop is second order (tests/fluid/fluid_taylor_green). Outer correctors (PIMPLE)
 // re-assemble with the latest F and u.
 //
-// The solver knows nothing about coupling or mesh motion drivers: it reads the geometry it is
-// given and exposes velocity, pressure, fluxes and patch forces.
+// The solver knows nothing about coupling or mesh motion drivers: it reads the geometry and the
+// clock (TimeControl) it is given and exposes velocity, pressure, fluxes and patch forces. Its life
+// cycle is that of every solver of a scene: the scene advances the clock, then
+//   begin_time_step()  (move to the clock's new time level),
+//   solve_current_step()  (repeatable: a coupling solves the step again after moving the mesh),
+//   end_time_step()  (accept the step).
+// Steady (Fluid/Transient = false), solve_current_step() runs pseudo time steps to convergence
+// from the current state.
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <fvfsi/base/time_control.h>
 #include <fvfsi/fluid/fluid_parameters.h>
 #include <fvfsi/fv/boundary_conditions.h>
-#include <fvfsi/fv/cell_gradient.h>
+#include <fvfsi/fv/cell_fields.h>
 #include <fvfsi/fv/face_matrix.h>
+#include <fvfsi/fv/gradients.h>
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/linear_solver.h>
 #include <fvfsi/fv/vertex_interpolation.h>
+#include <fvfsi/io/vtu_output.h>
 #include <fvfsi/mesh/fv_geometry.h>
 #include <fvfsi/mesh/mesh_parameters.h>
 
@@ -86,33 +95,33 @@ namespace fvfsi
   class FluidSolver
   {
   public:
+    /// `clock` is the scene's, read at every time step (steady runs ignore it).
     FluidSolver(const FVGeometry<dim>& geometry, const MeshParameters& mesh_parameters,
-                const FluidParameters& parameters);
+                const FluidParameters& parameters, const TimeControl& clock);
 
-    /// Advance by one time step (steady: one pseudo time step). Returns the relative change
-    /// dt max|du/dt| / max|u| of the step. Throws std::runtime_error naming the time step and
-    /// the field if a value becomes non-finite.
-    double solve_time_step();
-    /// solve_time_step() in three parts, for a coupling that solves one time step several times
-    /// (each time after a new move_mesh()): begin_time_step() moves to the next time level,
-    /// solve_current_step() (repeatable) solves it from the current iterate, end_time_step()
-    /// accepts it and returns the relative change.
+    /// Move to the clock's time level: boundary and body-force expressions at t, the state to
+    /// start from (transient: extrapolated from the last two steps).
     void begin_time_step();
+    /// Transient: one PISO step from the step's start state (a repeated call, after another
+    /// move_mesh(), starts from the same state). Steady: pseudo time steps until the relative
+    /// change is below the steady tolerance, from the current state. Throws std::runtime_error
+    /// naming the time step and the field if a value becomes non-finite.
     void solve_current_step();
+    /// Accept the step; returns its relative change dt max|du/dt| / max|u|.
     double end_time_step();
+    /// begin_time_step(), solve_current_step(), end_time_step().
+    double solve_time_step();
 
     /// The driver has moved the mesh for the coming time step (FVGeometry::reinit) and passes
     /// the volumes the faces swept, FVGeometry::swept_volumes() of that motion [m^dim]. The next
-    /// solve_time_step() builds the mesh fluxes from them. Transient runs only; a step without a
-    /// call is a step without motion.
+    /// solve builds the mesh fluxes from them. Transient runs only; a step without a call is a
+    /// step without motion.
     void move_mesh(const std::vector<double>& swept_volume);
 
     /// Steady: pseudo time steps until the relative change is below the steady tolerance.
     /// Returns the number of pseudo steps.
     unsigned int solve_steady();
 
-    double time() const { return current_time; }
-    unsigned int step() const { return time_step_number; }
     const FluidParameters& parameters() const { return prm; }
 
     /// u at the cell centres [m/s] (ghosts up to date).
@@ -140,6 +149,9 @@ namespace fvfsi
     double continuity_error() const;
     /// max over cells of the Courant number dt sum_f |phi_f| / (2 V_P).
     double courant_number() const;
+    /// Velocity u [m/s], pressure p [Pa] and vorticity [1/s] (2D: dv/dx - du/dy; 3D: its
+    /// magnitude) as output fields.
+    void add_output_fields(OutputFields<dim>& fields) const;
     /// Wall time per part of the algorithm, for the run's log.
     dealii::TimerOutput& timer() { return timer_output; }
 
@@ -153,8 +165,13 @@ namespace fvfsi
 
     void setup_boundary_conditions(const MeshParameters& mesh_parameters);
     void set_initial_conditions();
-    /// Transient: du/dt ~ c0 u - c1 u^o + c2 u^oo, the same in every cell.
-    void time_coefficients(double& c0, double& c1, double& c2) const;
+    /// Transient: the clock's du/dt ~ c0 u - c1 u^o + c2 u^oo, the same in every cell; steady:
+    /// zero (the local pseudo time steps are set in assemble_momentum()).
+    BdfCoefficients time_coefficients() const;
+    /// One PISO time step (transient) or pseudo time step (steady).
+    void solve_piso_step();
+    /// The clock's step (transient) or the pseudo time step (steady).
+    unsigned int step_index() const { return prm.transient ? clock.step() : pseudo_step; }
 
     // Boundary values, vertex values and gradients of u and p.
     void update_velocity_boundary_values();
@@ -181,7 +198,7 @@ namespace fvfsi
     /// time steps; in between, the matrices change a little and the old ones still work).
     bool refresh_preconditioners() const
     {
-      return (time_step_number - 1) % prm.preconditioner_update_interval == 0;
+      return (step_index() - 1) % prm.preconditioner_update_interval == 0;
     }
     void check_finite(const char* field) const;
     /// "time step N (t = ... s)" or "pseudo time step N", for messages.
@@ -189,9 +206,11 @@ namespace fvfsi
 
     const FVGeometry<dim>& geometry;
     FluidParameters prm;
+    const TimeControl& clock;
     dealii::ConditionalOStream pcout;
     dealii::TimerOutput timer_output;
     VertexInterpolation<dim> vertex_interpolation;
+    GaussGreenGradient<dim> gauss_green;
     Laplacian<dim> laplacian;
 
     std::vector<FaceCondition> face_condition; ///< per boundary face
@@ -215,8 +234,7 @@ namespace fvfsi
     FaceVector swept, swept_old;
     std::vector<dealii::Tensor<1, dim>> S_old, S_old2;
     std::vector<dealii::Point<dim>> r_f_old, r_f_old2;
-    double current_time = 0;
-    unsigned int time_step_number = 0;
+    unsigned int pseudo_step = 0; ///< steady: pseudo time steps so far
     // The state a time step starts from (after extrapolation), for repeated solves of the step.
     CellVectorField<dim> u_start;
     CellVector p_start;
@@ -241,6 +259,6 @@ namespace fvfsi
     std::vector<double> c0_cell;   ///< c0 of each owned cell (steady: local pseudo time step)
     FaceVector c0_face;            ///< c0_f (= c1_f: backward Euler or steady)
     FaceVector F_star, gamma_p;    ///< F_f without its pressure part; Gamma_f = 1 / (c0 + a*_f)
-    CellVector pressure_rhs;
+    CellVector pressure_rhs;       ///< -div F* and the outlet sources (without the correction)
   };
 } // namespace fvfsi

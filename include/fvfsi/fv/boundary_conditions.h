@@ -2,7 +2,7 @@
 // Boundary conditions of a cell-centred scalar field, per patch (boundary id), with one value per
 // boundary face.
 
-#include <fvfsi/fv/cell_gradient.h>
+#include <fvfsi/fv/cell_fields.h>
 #include <fvfsi/mesh/fv_geometry.h>
 
 #include <map>

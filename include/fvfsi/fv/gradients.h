@@ -2,7 +2,7 @@
 // Gradients of a cell-centred scalar field (paper Appendix A, Eqs 37 and 39), and the weighted
 // least-squares cell gradient used by the Demirdzic-Muzaferija discretisation.
 
-#include <fvfsi/fv/cell_gradient.h>
+#include <fvfsi/fv/cell_fields.h>
 #include <fvfsi/mesh/fv_geometry.h>
 
 #include <vector>
@@ -11,19 +11,10 @@ namespace fvfsi
 {
   /**
    * Vertex-based Gauss-Green cell gradient (Eq. 37): (grad phi)_P = 1/V_P sum_tau n_tau phi_tau S_tau,
-   * over the triangles tau of all faces of P, with phi_tau the mean of its corner values.
-   * Exact for linear fields on any mesh. Fills the owned cells and updates the ghosts.
-   */
-  template <int dim>
-  void gauss_green_gradient(const FVGeometry<dim>& geometry, const std::vector<double>& vertex_values,
-                            CellGradient<dim>& gradient);
-
-  /**
-   * The vertex-based Gauss-Green cell gradient of gauss_green_gradient() with the geometry folded
-   * into one coefficient vector per cell and vertex, (grad phi)_P = sum_v c_Pv phi_v (the face
-   * loop, with its many reads of the large face records, done once in reinit()): the same
-   * gradient to round-off, several times faster when it is called often (the solid solver calls
-   * it 2 (3D: 3) times per sweep).
+   * over the triangles tau of all faces of P, with phi_tau the mean of its corner values. Exact for
+   * linear fields on any mesh. The geometry is folded into one coefficient vector per cell and
+   * vertex, (grad phi)_P = sum_v c_Pv phi_v, by reinit() (the face loop, with its many reads of
+   * the large face records, done once per mesh motion): compute() is a short sparse product.
    */
   template <int dim>
   class GaussGreenGradient

@@ -25,44 +25,27 @@
 //   phi(N') ~ phi_N - k_N . g_N + 1/2 k_N . H_N . k_N,
 //   n_f . (grad phi)_f = (phi(N') - phi(P')) / d_fn  -  1/2 n.H_f.n (d_Nn - d_Pn)  + O(h^2),
 //
-// with g and H of a quadratic reconstruction (QuadraticReconstruction: g second-order accurate,
-// which the k-terms need on such faces, and H) and H_f = w H_P + (1 - w) H_N. At a Dirichlet face,
+// with g and H of a quadratic reconstruction (QuadraticFit: g second-order accurate, which the
+// k-terms need on such faces, and H) and H_f = w H_P + (1 - w) H_N. At a Dirichlet face,
 // n_f . (grad phi)_f = (phi_b - phi(P')) / d_fn + 1/2 n.H_P.n d_fn (d_fn = d_Pn). The implicit part
 // (phi_N - phi_P) / d_fn is the same for both; the rest is the explicit deferred correction.
-// FaceGradient::linear (the default, and what the solid, fluid and mesh-motion solvers use) is
-// Eq. 19 as above.
+// Every member that needs the explicit part takes an optional Hessian: without one it is Eq. 19
+// (what the solid, fluid and mesh-motion solvers use), with one the quadratic form above (the
+// Poisson scene's `Face gradient = quadratic`). One face loop serves both.
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <fvfsi/fv/boundary_conditions.h>
-#include <fvfsi/fv/cell_gradient.h>
-#include <fvfsi/fv/quadratic_reconstruction.h>
+#include <fvfsi/fv/cell_fields.h>
 #include <fvfsi/mesh/fv_geometry.h>
-
-#include <string>
 
 namespace fvfsi
 {
-  /// The face normal gradient of the Laplacian (see above).
-  enum class FaceGradient
-  {
-    linear,   ///< Eq. 19 with cell gradients: exact for linear fields
-    quadratic ///< Eq. 19 with second-order g and the Hessian terms: exact for quadratic fields
-  };
-
-  /// "linear" or "quadratic" (the names of the Poisson parameter `Face gradient`).
-  FaceGradient face_gradient_from_string(const std::string& name);
-
   template <int dim>
   class Laplacian
   {
   public:
-    /// With FaceGradient::linear, call the members without a Hessian argument; with
-    /// FaceGradient::quadratic, those with one (a mismatch throws std::logic_error).
-    explicit Laplacian(const FVGeometry<dim>& geometry,
-                       FaceGradient face_gradient = FaceGradient::linear);
-
-    FaceGradient face_gradient() const { return kind; }
+    explicit Laplacian(const FVGeometry<dim>& geometry);
 
     /// A matrix with the cell + face-neighbour sparsity of this mesh.
     void reinit_matrix(dealii::TrilinosWrappers::SparseMatrix& matrix) const;
@@ -72,42 +55,34 @@ namespace fvfsi
     void assemble(const FaceVector& gamma, const ScalarBoundaryConditions<dim>& bc,
                   dealii::TrilinosWrappers::SparseMatrix& matrix, CellVector& rhs) const;
 
-    /// Add the explicit non-orthogonal correction, computed with the cell gradients `grad`
-    /// (ghosts up to date), to `rhs`.
+    /// Add the explicit non-orthogonal correction, computed with the cell gradients `grad` (and
+    /// Hessians, if given; ghosts up to date), to `rhs`.
     void add_correction(const FaceVector& gamma, const ScalarBoundaryConditions<dim>& bc,
-                        const CellGradient<dim>& grad, CellVector& rhs) const;
+                        const CellGradient<dim>& grad, CellVector& rhs,
+                        const CellHessian<dim>* hessian = nullptr) const;
 
-    /// n_f . (grad phi)_f of face f (Eq. 19, or Eq. 23 / the given value at a boundary).
+    /// n_f . (grad phi)_f of face f (Eq. 19 or its quadratic form, Eq. 23 / the given value at a
+    /// boundary).
     double normal_gradient(unsigned int f, const CellVector& phi, const CellGradient<dim>& grad,
-                           const ScalarBoundaryConditions<dim>& bc) const;
+                           const ScalarBoundaryConditions<dim>& bc,
+                           const CellHessian<dim>* hessian = nullptr) const;
 
-    /// phi_b on every boundary and ghost-boundary face: the given value on Dirichlet faces,
-    /// phi_P + d_fn g + k_P . (grad phi)_P on Neumann faces (g the given normal gradient).
+    /// phi_b on every boundary and ghost-boundary face: the given value on Dirichlet faces; on
+    /// Neumann faces (g the given normal gradient) the Dirichlet form of the face gradient solved
+    /// for phi_b: phi_P + d_fn g + k_P . (grad phi)_P, with a Hessian phi(P') + d_fn g - 1/2 d_fn^2
+    /// n.H_P.n.
     FaceVector boundary_values(const CellVector& phi, const CellGradient<dim>& grad,
-                               const ScalarBoundaryConditions<dim>& bc) const;
-
-    /// FaceGradient::quadratic: the members above with the Hessian terms, for g and H of a
-    /// QuadraticReconstruction (ghosts up to date). On Neumann faces
-    /// phi_b = phi(P') + d_fn g - 1/2 d_fn^2 n.H_P.n.
-    void add_correction(const FaceVector& gamma, const ScalarBoundaryConditions<dim>& bc,
-                        const CellGradient<dim>& grad, const CellHessian<dim>& hessian,
-                        CellVector& rhs) const;
-    double normal_gradient(unsigned int f, const CellVector& phi, const CellGradient<dim>& grad,
-                           const CellHessian<dim>& hessian,
-                           const ScalarBoundaryConditions<dim>& bc) const;
-    FaceVector boundary_values(const CellVector& phi, const CellGradient<dim>& grad,
-                               const CellHessian<dim>& hessian,
-                               const ScalarBoundaryConditions<dim>& bc) const;
+                               const ScalarBoundaryConditions<dim>& bc,
+                               const CellHessian<dim>* hessian = nullptr) const;
 
   private:
-    void require(FaceGradient needed, const char* member) const;
-    /// d_fn times the explicit part of the quadratic n_f . (grad phi)_f: on an interior face
+    /// d_fn times the explicit part of n_f . (grad phi)_f. Eq. 19: -(k_P.(grad phi)_P +
+    /// k_N.(grad phi)_N) (boundary: -k_P.(grad phi)_P). Quadratic: on an interior face
     /// phi(N') - phi(P') - (phi_N - phi_P) - 1/2 d_fn (d_Nn - d_Pn) n.H_f.n, on a boundary face
     /// (Dirichlet form) -(phi(P') - phi_P) + 1/2 d_fn^2 n.H_P.n.
-    double quadratic_correction(const FaceGeometry<dim>& face, const CellGradient<dim>& grad,
-                                const CellHessian<dim>& hessian) const;
+    double explicit_part(const FaceGeometry<dim>& face, const CellGradient<dim>& grad,
+                         const CellHessian<dim>* hessian) const;
 
     const FVGeometry<dim>& geometry;
-    FaceGradient kind;
   };
 } // namespace fvfsi

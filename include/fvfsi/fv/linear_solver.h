@@ -15,8 +15,19 @@ namespace fvfsi
 {
   struct LinearSolverParameters
   {
-    std::string method = "CG";          ///< CG (symmetric matrices) or GMRES
-    std::string preconditioner = "AMG"; ///< AMG, ILU or Jacobi
+    enum class Method
+    {
+      cg,   ///< conjugate gradients: symmetric positive definite matrices
+      gmres ///< GMRES: any matrix
+    };
+    enum class Preconditioner
+    {
+      amg,   ///< Trilinos ML algebraic multigrid, one V-cycle
+      ilu,   ///< Trilinos Ifpack ILU(0)
+      jacobi ///< diagonal scaling
+    };
+    Method method = Method::cg;
+    Preconditioner preconditioner = Preconditioner::amg;
     double reduction = 1e-6;            ///< relative residual reduction per solve
     double absolute_tolerance = 1e-14;  ///< ... or this absolute residual
     unsigned int max_iterations = 2000;

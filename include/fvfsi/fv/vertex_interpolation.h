@@ -10,8 +10,7 @@
 // each rank has the whole stencil of each vertex of its owned cells. Stencils are sorted by global
 // cell number, so every rank that sees a vertex sums in the same order and gets the same bits.
 
-#include <fvfsi/fv/cell_gradient.h>
-#include <fvfsi/fv/cell_hessian.h>
+#include <fvfsi/fv/cell_fields.h>
 #include <fvfsi/mesh/fv_geometry.h>
 
 #include <vector>
@@ -38,7 +37,7 @@ namespace fvfsi
     /// of its cell (of a boundary face: of the face's cell; ghost values up to date): the vertex
     /// values of interpolate() become exact for quadratics if H is exact, with an O(h^3) error if
     /// H is first-order accurate.
-    void subtract_quadratic_terms(const CellHessianField<dim>& hessian,
+    void subtract_quadratic_terms(const CellHessian<dim>& hessian,
                                   std::vector<double>& vertex_values) const;
 
     /// Triangulation indices of the vertices of locally owned cells.
@@ -53,8 +52,9 @@ namespace fvfsi
     std::vector<unsigned int> cell_start, stencil_cell;
     std::vector<unsigned int> face_start, stencil_face;
     std::vector<double> cell_coefficient, face_coefficient;
-    /// Per stencil entry: a_j 1/2 (r_j - x_v)_a (r_j - x_v)_b, entries a <= b as in
-    /// CellHessianField, off-diagonal ones doubled (so that the sum over k with H_k is a_j 1/2 s.H.s).
-    std::vector<std::array<double, n_hessian_entries<dim>>> cell_quadratic, face_quadratic;
+    /// Per stencil entry: a_j 1/2 (r_j - x_v)_k (r_j - x_v)_l for H's independent components
+    /// (k, l) in CellHessian's order, off-diagonal ones doubled (so that the sum over them with
+    /// H_kl is a_j 1/2 s.H.s).
+    std::vector<std::array<double, CellHessian<dim>::n_components>> cell_quadratic, face_quadratic;
   };
 } // namespace fvfsi

@@ -83,12 +83,15 @@ namespace fvfsi
     /// triangulation's vertices). Call once after every mesh motion.
     void reinit(const std::vector<dealii::Point<dim>>& vertex_positions);
 
-    /// The volume [m^dim] each face sweeps when the vertices move from their current positions to
-    /// `new_vertex_positions`, positive where the face moves out of its owner P, indexed like
-    /// `faces`. Built from the same face pieces as the cell volumes, so that for every cell
-    /// sum_f (+-) dV_f = V_P(new) - V_P(current) to round-off: the space conservation law (Eq. 3)
-    /// holds exactly for mesh fluxes made of these volumes (source/mesh/swept_volume.cc).
-    std::vector<double> swept_volumes(const std::vector<dealii::Point<dim>>& new_vertex_positions) const;
+    /// The volume [m^dim] each face sweeps when the vertices move from `old_positions` to
+    /// `new_positions` (indexed like the triangulation's vertices), positive where the face moves
+    /// out of its owner P, indexed like `faces`. Built from the same face pieces as the cell
+    /// volumes, so that for every cell sum_f (+-) dV_f = V_P(new) - V_P(old) to round-off: the
+    /// space conservation law (Eq. 3) holds exactly for mesh fluxes made of these volumes
+    /// (source/mesh/swept_volume.cc). Needs no reinit(): a coupling iteration computes the swept
+    /// volumes from the step's start positions and then the geometry once at the new ones.
+    std::vector<double> swept_volumes(const std::vector<dealii::Point<dim>>& old_positions,
+                                      const std::vector<dealii::Point<dim>>& new_positions) const;
 
     MPI_Comm comm() const { return tria.get_communicator(); }
     const dealii::parallel::distributed::Triangulation<dim>& triangulation() const { return tria; }

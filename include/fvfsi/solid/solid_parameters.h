@@ -4,6 +4,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <fvfsi/base/selection.h>
 #include <fvfsi/fv/linear_solver.h>
 
 #include <string>
@@ -27,19 +28,44 @@ namespace fvfsi
     std::string expression;
   };
 
+  /// True for the boundary conditions that give a traction (Eq. 24) rather than a displacement.
+  inline bool takes_traction(const SolidBoundaryCondition::Type t)
+  {
+    using Type = SolidBoundaryCondition::Type;
+    return t == Type::traction || t == Type::pressure || t == Type::external_traction;
+  }
+
   struct SolidParameters
   {
-    std::string model = "linear elastic"; ///< `linear elastic` or `St. Venant-Kirchhoff`
-    std::string plane = "plane strain";   ///< 2D only: `plane strain` or `plane stress`
+    enum class Model
+    {
+      linear_elastic,      ///< small strain
+      st_venant_kirchhoff  ///< finite strain, total Lagrangian (Eqs 4-9)
+    };
+    enum class Plane
+    {
+      strain,
+      stress
+    };
+    /// The face gradient of the discretisation (paper section 3.2 and its comparison models).
+    enum class Variant
+    {
+      present,              ///< central normal part + vertex Gauss-Green tangential part
+      demirdzic_muzaferija, ///< least-squares cell gradients interpolated to faces
+      jasak_weller          ///< skew-corrected Gauss cell gradients (solidDisplacementFoam)
+    };
+    static const SelectionNames<Model> model_names;
+    static const SelectionNames<Variant> variant_names;
+
+    Model model = Model::linear_elastic;
+    Plane plane = Plane::strain;          ///< 2D only
     double E = 1e7;                       ///< Young's modulus [Pa]
     double nu = 0.3;                      ///< Poisson's ratio [-]
     double rho = 1000;                    ///< density rho_0 [kg/m^3]
     std::string body_force = "0; 0";      ///< b [m/s^2], vector expression of x, y[, z], t
-    std::string variant = "present";      ///< present | Demirdzic-Muzaferija | Jasak-Weller
+    Variant variant = Variant::present;
 
     bool transient = false;               ///< false: steady (no inertia)
-    double time_step = 0.01;              ///< dt [s]
-    double end_time = 1;                  ///< [s]
     /// Outer (segregated) iterations per time step: stop when max |du| / max |u| < tolerance.
     double outer_tolerance = 1e-6;
     unsigned int max_outer_iterations = 1000;

@@ -13,24 +13,36 @@
 //
 // With `Solid/Hessian correction` (present variant; an extension of the paper) the vertex values
 // and the boundary values extrapolated at traction and symmetry faces also carry their
-// second-order Taylor terms, with per-cell Hessians (DisplacementHessian): without them the max
+// second-order Taylor terms, with per-cell Hessians (QuadraticFit): without them the max
 // displacement error converges like h^2 log(1/h) where two traction boundaries meet (see
-// update_hessians() in solid_solver.cc).
+// solid_gradients.cc).
 //
 // The solver knows nothing about coupling: an external traction per boundary face can be set
-// (set_external_traction) and the displacement read (displacement, boundary_displacement).
+// (set_external_traction) and the displacement read (displacement, boundary_displacement). It
+// reads the scene's clock (TimeControl) and has the life cycle of every solver of a scene: the
+// scene advances the clock, then begin_time_step(), solve_current_step() (repeatable, e.g. with
+// new external tractions), end_time_step().
+//
+// The code is in three files: solid_solver.cc (set-up, time steps, outer iterations),
+// solid_face_forces.cc (face gradients, boundary values, tractions, the residual) and
+// solid_gradients.cc (the sweeps of boundary values, vertex values and gradients; the Hessian
+// correction).
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
-#include <fvfsi/fv/anderson_acceleration.h>
-#include <fvfsi/fv/cell_gradient.h>
-#include <fvfsi/fv/cell_hessian.h>
+#include <deal.II/lac/la_parallel_block_vector.h>
+
+#include <fvfsi/base/time_control.h>
+#include <fvfsi/fv/cell_fields.h>
 #include <fvfsi/fv/gradients.h>
 #include <fvfsi/fv/laplacian.h>
+#include <fvfsi/fv/least_squares_model.h>
 #include <fvfsi/fv/linear_solver.h>
+#include <fvfsi/fv/quadratic_fit.h>
 #include <fvfsi/fv/vertex_interpolation.h>
+#include <fvfsi/io/vtu_output.h>
 #include <fvfsi/mesh/fv_geometry.h>
 #include <fvfsi/mesh/mesh_parameters.h>
 #include <fvfsi/solid/constitutive.h>
@@ -47,21 +59,23 @@ namespace fvfsi
   class SolidSolver
   {
   public:
+    /// `clock` is the scene's (a steady solid reads only its time, for the loads).
     SolidSolver(const FVGeometry<dim>& geometry, const MeshParameters& mesh_parameters,
-                const SolidParameters& parameters);
+                const SolidParameters& parameters, const TimeControl& clock);
 
-    /// Advance by one time step (steady: solve the static problem) with outer iterations.
-    /// Returns the number of outer iterations. Throws std::runtime_error naming the time step if
-    /// the iterations diverge (non-finite values) or exceed the limit.
-    unsigned int solve_time_step();
-    /// solve_time_step() in two parts, for a coupling that solves one time step several times:
-    /// begin_time_step() moves to the next time level; solve_current_step() (repeatable, e.g.
-    /// with new external tractions) solves it from the current iterate.
+    /// Move to the clock's time level: loads and boundary values at t, the matrices for its
+    /// time step.
     void begin_time_step();
+    /// Outer iterations from the current iterate until the relative change is below the outer
+    /// tolerance; returns their number. Repeatable (a coupling calls it again with new external
+    /// tractions: each call starts from the last solution). Throws std::runtime_error naming the
+    /// time step if the iterations diverge (non-finite values) or exceed the limit.
     unsigned int solve_current_step();
+    /// Accept the step (transient: shift the time levels of u and v).
+    void end_time_step();
+    /// begin_time_step(), solve_current_step(), end_time_step(); returns the outer iterations.
+    unsigned int solve_time_step();
 
-    double time() const { return current_time; }
-    unsigned int step() const { return time_step_number; }
     const LameParameters& material() const { return lame; }
 
     /// u at the cell centres [m] (ghost values up to date).
@@ -82,6 +96,10 @@ namespace fvfsi
     /// vertices (App. B reconstruction; other entries zero).
     std::vector<dealii::Tensor<1, dim>> vertex_displacements() const;
 
+    /// Displacement u [m], Cauchy stress components sigma_ij [Pa] and the von Mises stress [Pa]
+    /// (2D: of the in-plane stress) as output fields.
+    void add_output_fields(OutputFields<dim>& fields) const;
+
     /// Cauchy traction [Pa] on the faces of `external traction` patches, indexed like
     /// FVGeometry::faces (entries of other faces are ignored).
     void set_external_traction(const std::vector<dealii::Tensor<1, dim>>& traction);
@@ -93,8 +111,16 @@ namespace fvfsi
       int expression = -1; ///< index into `functions`, -1 for none
     };
 
+    using Variant = SolidParameters::Variant;
+    /// The outer iterations' unknowns (dim blocks of owned cells) for the acceleration.
+    using BlockVector = dealii::LinearAlgebra::distributed::BlockVector<double>;
+
     void setup_boundary_conditions(const MeshParameters& mesh_parameters);
+    void setup_hessian_correction();
     void assemble_matrices(double mass_coefficient);
+    /// One outer iteration: residual, component solves, accelerated update; returns the relative
+    /// change max |du| / max |u|.
+    double outer_iteration(unsigned int k);
     void update_gradients();
     void update_boundary_values();
     void find_constrained_vertices();
@@ -107,6 +133,7 @@ namespace fvfsi
 
     const FVGeometry<dim>& geometry;
     SolidParameters parameters;
+    const TimeControl& clock;
     LameParameters lame;
     dealii::ConditionalOStream pcout;
     VertexInterpolation<dim> vertex_interpolation;
@@ -124,18 +151,18 @@ namespace fvfsi
     std::vector<std::unique_ptr<dealii::FunctionParser<dim>>> functions;
     dealii::FunctionParser<dim> body_force;
     std::array<std::vector<double>, dim> body_force_value; ///< b at the owned cell centres, this step
-    bool present_variant = false, jasak_weller_variant = false; ///< parameters.variant, decoded
     std::vector<dealii::Tensor<1, dim>> external_traction;
 
     std::array<dealii::TrilinosWrappers::SparseMatrix, dim> matrix;
     std::array<std::unique_ptr<LinearSolver>, dim> linear_solver;
     double assembled_mass_coefficient = -1;
-    std::unique_ptr<AndersonAcceleration> acceleration;
+    /// Anderson acceleration of the outer iterations: the least-squares model of the residual
+    /// f = du over the iterates' images g = u + du (depth: Solid/Outer acceleration depth).
+    LeastSquaresModel<BlockVector> acceleration;
+    BlockVector f, g, f_previous, g_previous;
 
     // State: u and its history for BDF2 (u^[m-1], u^[m-2], v^[m-1], v^[m-2]).
     CellVectorField<dim> u, u_old, u_old2, v_old, v_old2;
-    double current_time = 0;
-    unsigned int time_step_number = 0;
 
     // Derived from u in update_gradients().
     std::array<CellGradient<dim>, dim> grad_u;       ///< grad_u[j] = grad u_j
@@ -147,8 +174,8 @@ namespace fvfsi
     std::map<unsigned int, const dealii::FunctionParser<dim>*> fixed_vertex_function;
 
     /// Hessian correction (present variant): per-cell Hessians of u_j and their fit.
-    std::unique_ptr<DisplacementHessian<dim>> cell_hessian;
-    std::array<CellHessianField<dim>, dim> hessian;
+    std::unique_ptr<QuadraticFit<dim>> cell_hessian;
+    std::array<CellHessian<dim>, dim> hessian;
     std::vector<dealii::Tensor<1, dim>> boundary_g_n; ///< n . grad u on traction faces
     /// From the current Hessians: the quadratic terms of the vertex fit (subtracted from the
     /// linear fit's vertex values) and of the extrapolation to traction and symmetry faces.

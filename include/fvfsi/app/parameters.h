@@ -1,15 +1,16 @@
 #pragma once
-// The fvfsi command line:  fvfsi [CASE.prm] [--set "Section/Key=value"]... | --help | --print-parameters
+// Every parameter fvfsi knows, bound to one ParameterHandler, and how a .prm file and `--set`
+// overrides are read into them.
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <fvfsi/apps/fluid_scene.h>
-#include <fvfsi/apps/fsi_scene.h>
-#include <fvfsi/apps/poisson.h>
-#include <fvfsi/apps/solid_scene.h>
+#include <fvfsi/base/time_control.h>
 #include <fvfsi/mesh/mesh_parameters.h>
+#include <fvfsi/scenes/fluid_scene.h>
+#include <fvfsi/scenes/fsi_scene.h>
+#include <fvfsi/scenes/poisson.h>
+#include <fvfsi/scenes/solid_scene.h>
 
-#include <ostream>
 #include <string>
 #include <vector>
 
@@ -18,8 +19,17 @@ namespace fvfsi
   /// The top level of a .prm file: which scene, in which dimension, written where.
   struct RunParameters
   {
+    enum class Scene
+    {
+      poisson, ///< the FV core verification problem
+      solid,   ///< the solid solver alone
+      fluid,   ///< the flow solver alone, on a fixed or moving mesh
+      fsi      ///< fluid and solid coupled
+    };
+    static const SelectionNames<Scene> scene_names;
+
     unsigned int dim = 2;
-    std::string scene = "poisson";
+    Scene scene = Scene::poisson;
     std::string output_directory = "output";
     void declare(dealii::ParameterHandler& prm);
   };
@@ -29,6 +39,7 @@ namespace fvfsi
   {
     AllParameters();
     RunParameters run;
+    TimeParameters time;
     MeshParameters mesh;
     PoissonParameters poisson;
     SolidParameters solid;
@@ -38,6 +49,12 @@ namespace fvfsi
     MeshParameters solid_mesh; ///< FSI: the solid's mesh (subsection `Solid mesh`)
     FsiSceneParameters fsi;
     dealii::ParameterHandler prm;
+
+    /// The parameters of an FSI scene.
+    FsiSceneInput fsi_input() const
+    {
+      return {mesh, solid_mesh, fluid, fluid_scene, solid, solid_scene, fsi, time};
+    }
   };
 
   /**
@@ -46,8 +63,4 @@ namespace fvfsi
    */
   void read_parameters(AllParameters& parameters, const std::string& file,
                        const std::vector<std::string>& overrides);
-
-  /// Run fvfsi as the executable does (MPI must be initialised). Messages go to `out`/`err` on
-  /// rank 0. Returns the process exit code: 0 on success, 1 on any error.
-  int run_application(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 } // namespace fvfsi

@@ -4,7 +4,7 @@
 //
 // For phi = a + b.x + 1/2 x.A.x (A symmetric) sampled exactly (cell values phi(r_P), boundary
 // values phi(r_f) on every boundary and ghost_boundary face), asserts:
-//  - QuadraticReconstruction::compute gives g_P = b + A r_P and H_P = A, on the owned cells and,
+//  - QuadraticFit::compute (the Poisson face gradient's data) gives g_P = b + A r_P and H_P = A, on the owned cells and,
 //    after its ghost update, on the ghost cells (the vertex-neighbour stencil of every owned cell
 //    is complete on every rank);
 //  - Laplacian::normal_gradient (quadratic) equals n.grad phi(r_f) on interior and processor faces
@@ -28,7 +28,7 @@
 
 #include <fvfsi/fv/boundary_conditions.h>
 #include <fvfsi/fv/laplacian.h>
-#include <fvfsi/fv/quadratic_reconstruction.h>
+#include <fvfsi/fv/quadratic_fit.h>
 #include <fvfsi/mesh/fv_geometry.h>
 
 #include "fv_core_test_tools.h"
@@ -96,7 +96,7 @@ double operator_error(const fvfsi::FVGeometry<dim>& fv, const QuadraticField<dim
   fvfsi::CellVector rhs = fv.make_cell_vector();
   laplacian.assemble(gamma, bc, matrix, rhs);
   matrix.compress(VectorOperation::add);
-  laplacian.add_correction(gamma, bc, g, H, rhs);
+  laplacian.add_correction(gamma, bc, g, rhs, &H);
 
   TrilinosWrappers::MPI::Vector x(matrix.locally_owned_domain_indices(), fv.comm()), Ax(x);
   for (unsigned int c = 0; c < fv.n_owned_cells(); ++c)
@@ -136,8 +136,12 @@ void test(std::ostream& out, const std::string& generator, const std::string& ar
   parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
   make_test_mesh(tria, generator, arguments, refinements, 0.25);
   const fvfsi::FVGeometry<dim> fv(tria);
-  const fvfsi::QuadraticReconstruction<dim> reconstruction(fv);
-  const fvfsi::Laplacian<dim> quadratic(fv, fvfsi::FaceGradient::quadratic), linear(fv);
+  fvfsi::QuadraticFitData data; // the Poisson scene's: all boundary faces, weights (L/|s|)^6
+  data.value_faces.assign(fv.faces.size(), false);
+  for (unsigned int f = 0; f < fv.faces.size(); ++f)
+    data.value_faces[f] = fv.faces[f].N == fvfsi::invalid_cell;
+  const fvfsi::QuadraticFit<dim> reconstruction(fv, data);
+  const fvfsi::Laplacian<dim> laplacian(fv);
   const auto& faces = fv.faces;
   const QuadraticField<dim> field;
 
@@ -152,7 +156,7 @@ void test(std::ostream& out, const std::string& generator, const std::string& ar
 
   fvfsi::CellGradient<dim> g(fv);
   fvfsi::CellHessian<dim> H(fv);
-  reconstruction.compute(phi, boundary, g, H);
+  reconstruction.compute(phi, boundary, fvfsi::FaceVector(), g, H);
   check_reconstruction(out, fv, field, g, H);
 
   // Face normal gradients, all patches Dirichlet with the exact value at r_f.
@@ -171,10 +175,10 @@ void test(std::ostream& out, const std::string& generator, const std::string& ar
   for (unsigned int f = 0; f < faces.size(); ++f)
   {
     const double exact = faces[f].n * field.gradient(faces[f].centre);
-    const double e = std::abs(quadratic.normal_gradient(f, phi, g, H, dirichlet) - exact) / scale;
+    const double e = std::abs(laplacian.normal_gradient(f, phi, g, dirichlet, &H) - exact) / scale;
     record(faces[f].N == fvfsi::invalid_cell ? boundary_error : interior_error, e);
     if (faces[f].N != fvfsi::invalid_cell)
-      record(linear_error, std::abs(linear.normal_gradient(f, phi, g, dirichlet) - exact) / scale);
+      record(linear_error, std::abs(laplacian.normal_gradient(f, phi, g, dirichlet) - exact) / scale);
   }
   check(out, "quadratic normal gradient = n.grad phi(r_f) on interior and processor faces",
         interior_error, tolerance);
@@ -185,7 +189,7 @@ void test(std::ostream& out, const std::string& generator, const std::string& ar
         Utilities::MPI::max(linear_error, MPI_COMM_WORLD) > 1e-3);
 
   // Neumann boundary values.
-  const fvfsi::FaceVector values = quadratic.boundary_values(phi, g, H, neumann);
+  const fvfsi::FaceVector values = laplacian.boundary_values(phi, g, neumann, &H);
   double value_error = 0;
   for (unsigned int f = 0; f < faces.size(); ++f)
     if (faces[f].N == fvfsi::invalid_cell)
@@ -195,7 +199,7 @@ void test(std::ostream& out, const std::string& generator, const std::string& ar
 
   check(out,
         "assembled operator with quadratic correction = -sum_f S_f n.grad phi(r_f) (Dirichlet)",
-        operator_error(fv, field, quadratic, dirichlet, phi, g, H), tolerance);
+        operator_error(fv, field, laplacian, dirichlet, phi, g, H), tolerance);
 }
 
 int main(int argc, char** argv)

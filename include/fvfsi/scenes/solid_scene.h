@@ -7,8 +7,11 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/distributed/tria.h>
 
+#include <fvfsi/base/time_control.h>
 #include <fvfsi/fv/point_probes.h>
+#include <fvfsi/io/history_file.h>
 #include <fvfsi/io/summary.h>
+#include <fvfsi/io/vtu_output.h>
 #include <fvfsi/mesh/fv_geometry.h>
 #include <fvfsi/mesh/mesh_parameters.h>
 #include <fvfsi/solid/solid_parameters.h>
@@ -54,14 +57,15 @@ namespace fvfsi
   {
   public:
     SolidScene(const MeshParameters& mesh_parameters, const SolidParameters& solid_parameters,
-               const SolidSceneParameters& scene_parameters, MPI_Comm comm,
-               const std::string& prm_directory, const std::string& output_directory);
+               const SolidSceneParameters& scene_parameters, const TimeParameters& time,
+               MPI_Comm comm, const std::string& prm_directory, const std::string& output_directory);
 
     void run();
     void write_summary(Summary& summary) const;
     const SolidResults& results() const { return result; }
     const FVGeometry<dim>& geometry() const { return *fv; }
     const SolidSolver<dim>& solver() const { return *solid; }
+    const TimeControl& time() const { return clock; }
 
   private:
     void make_grid();
@@ -77,11 +81,13 @@ namespace fvfsi
     SolidSceneParameters scene_parameters;
     std::string prm_directory, output_directory;
     dealii::ConditionalOStream pcout;
+    TimeControl clock;
     dealii::parallel::distributed::Triangulation<dim> triangulation;
     std::unique_ptr<FVGeometry<dim>> fv;
     std::unique_ptr<SolidSolver<dim>> solid;
     PointProbes<dim> probes;
-    std::string history_file;
+    std::unique_ptr<VtuOutput<dim>> vtu_output;
+    std::unique_ptr<HistoryFile> history;
     SolidResults result;
   };
 } // namespace fvfsi

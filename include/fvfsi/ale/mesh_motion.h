@@ -18,19 +18,24 @@
 //    take their prescribed displacement exactly (a vertex shared by a moving and a fixed patch
 //    follows the moving one).
 //
-// The class knows nothing about the fluid: it returns vertex positions, which a driver passes to
-// FVGeometry::swept_volumes, FVGeometry::reinit and FluidSolver::move_mesh.
+// The class knows nothing about the fluid: it returns vertex positions at the time of the scene's
+// clock, which a driver passes to FVGeometry::swept_volumes, FVGeometry::reinit and
+// FluidSolver::move_mesh. Every Laplace solve starts from the last one's cell displacements (a
+// warm start: between time steps or coupling iterations they change little).
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
-#include <fvfsi/fv/cell_gradient.h>
+#include <fvfsi/base/time_control.h>
+#include <fvfsi/fv/cell_fields.h>
+#include <fvfsi/fv/gradients.h>
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/linear_solver.h>
 #include <fvfsi/fv/vertex_interpolation.h>
 #include <fvfsi/mesh/fv_geometry.h>
+#include <fvfsi/base/selection.h>
 #include <fvfsi/mesh/mesh_parameters.h>
 
 #include <array>
@@ -42,28 +47,46 @@ namespace fvfsi
 {
   struct MeshMotionParameters
   {
-    std::string type = "none"; ///< none | prescribed | Laplace
+    enum class Type
+    {
+      none,       ///< a fixed mesh
+      prescribed, ///< every vertex by a given displacement
+      laplace     ///< moving patches given, the interior by a Laplace equation
+    };
+    enum class Diffusivity
+    {
+      quadratic_inverse_distance, ///< 1 / max(r, d_fn)^2
+      inverse_distance,           ///< 1 / max(r, d_fn)
+      uniform                     ///< 1
+    };
+    static const SelectionNames<Type> type_names;
+    Type type = Type::none;
     /// prescribed: dim expressions of the reference position x, y[, z] and t [m].
     std::string displacement = "";
     /// Laplace: `patch: expressions | patch: expressions`, the displacement of moving patches.
     std::string moving_patches = "";
-    /// Laplace: `quadratic inverse distance`, `inverse distance` or `uniform`.
-    std::string diffusivity = "inverse distance";
+    Diffusivity diffusivity = Diffusivity::inverse_distance;
     unsigned int non_orthogonal_correctors = 2;
     LinearSolverParameters solver;
 
     MeshMotionParameters();
     void declare(dealii::ParameterHandler& prm);
-    bool moves() const { return type != "none"; }
+    bool moves() const { return type != Type::none; }
   };
+
+  /// The smallest V_P / V_P(reference) over the cells of a moved mesh (collective). Throws,
+  /// naming the worst cell by its reference centroid and the time t [s], if a cell is inverted
+  /// (ratio <= 0).
+  template <int dim>
+  double min_volume_ratio(const FVGeometry<dim>& moved, const FVGeometry<dim>& reference, double t);
 
   template <int dim>
   class MeshMotion
   {
   public:
-    /// `reference` is a geometry of the undeformed mesh that is never moved.
+    /// `reference` is a geometry of the undeformed mesh that is never moved; `clock` the scene's.
     MeshMotion(const FVGeometry<dim>& reference, const MeshParameters& mesh_parameters,
-               const MeshMotionParameters& parameters);
+               const MeshMotionParameters& parameters, const TimeControl& clock);
 
     /// The vertices (triangulation indices) of a moving patch that this rank's cells touch: the
     /// entries set_patch_displacement reads.
@@ -76,9 +99,9 @@ namespace fvfsi
     void set_patch_displacement(const std::string& patch,
                                 const std::vector<dealii::Tensor<1, dim>>& vertex_displacement);
 
-    /// The vertex positions at time t (indexed like the triangulation's vertices; vertices of no
-    /// locally relevant cell stay where they are).
-    std::vector<dealii::Point<dim>> vertex_positions(double t);
+    /// The vertex positions at the clock's time (indexed like the triangulation's vertices;
+    /// vertices of no locally relevant cell stay where they are).
+    std::vector<dealii::Point<dim>> vertex_positions();
 
     /// Linear iterations of the last Laplace solve (all components and corrections).
     unsigned int last_linear_iterations() const { return linear_iterations; }
@@ -91,6 +114,7 @@ namespace fvfsi
 
     const FVGeometry<dim>& reference;
     MeshMotionParameters prm;
+    const TimeControl& clock;
     std::unique_ptr<dealii::FunctionParser<dim>> prescribed;
 
     // Laplace.
@@ -105,6 +129,7 @@ namespace fvfsi
     MovingPatch& moving_patch(const std::string& name);
     Laplacian<dim> laplacian;
     VertexInterpolation<dim> vertex_interpolation;
+    GaussGreenGradient<dim> gauss_green;
     LinearSolver solver;
     dealii::TrilinosWrappers::SparseMatrix matrix;
     CellVector rhs_boundary; ///< the Dirichlet sources of the assembled matrix, per unit value

@@ -6,33 +6,37 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/numerics/rtree.h>
 
-#include <fvfsi/apps/poisson.h> // initialize_function
-#include <fvfsi/fv/gradients.h>
-#include <fvfsi/mesh/mesh_motion.h>
+#include <fvfsi/ale/mesh_motion.h>
+#include <fvfsi/base/parsed_function.h>
+#include <fvfsi/base/patch_list.h>
+#include <fvfsi/fv/deferred_correction.h>
 
 #include <algorithm>
-
+#include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace fvfsi
 {
   using namespace dealii;
 
+  const SelectionNames<MeshMotionParameters::Type> MeshMotionParameters::type_names = {
+    {"none", Type::none}, {"prescribed", Type::prescribed}, {"Laplace", Type::laplace}};
+
   MeshMotionParameters::MeshMotionParameters()
   {
-    solver.method = "CG";
-    solver.preconditioner = "AMG";
+    solver.method = LinearSolverParameters::Method::cg;
+    solver.preconditioner = LinearSolverParameters::Preconditioner::amg;
     solver.reduction = 1e-8;
   }
 
   void MeshMotionParameters::declare(ParameterHandler& prm)
   {
     prm.enter_subsection("Mesh motion");
-    prm.add_parameter("Type", type,
-                      "none: a fixed mesh; prescribed: every vertex moves by `Displacement`; "
-                      "Laplace: the `Moving patches` move as given, the other boundaries are fixed, "
-                      "the interior follows a Laplace equation with variable diffusivity.",
-                      Patterns::Selection("none|prescribed|Laplace"));
+    add_selection(prm, "Type", type, type_names,
+                  "none: a fixed mesh; prescribed: every vertex moves by `Displacement`; "
+                  "Laplace: the `Moving patches` move as given, the other boundaries are fixed, "
+                  "the interior follows a Laplace equation with variable diffusivity.");
     prm.add_parameter("Displacement", displacement,
                       "prescribed: d(X, t) [m] of a vertex at reference position X, dim expressions "
                       "of x, y[, z], t separated by `;`.");
@@ -40,12 +44,14 @@ namespace fvfsi
                       "Laplace: `patch: expressions | patch: expressions`, d(X, t) [m] of the "
                       "vertices of each moving patch (dim expressions of x, y[, z], t separated by "
                       "`;`).");
-    prm.add_parameter("Diffusivity", diffusivity,
-                      "Laplace: gamma_f = 1 / max(r_f, d_fn)^2 with r_f the distance of the face "
-                      "centre from the nearest moving-patch face (quadratic inverse distance), "
-                      "1 / max(r_f, d_fn) (inverse distance: spreads the deformation more evenly "
-                      "in narrow channels), or 1 (uniform).",
-                      Patterns::Selection("quadratic inverse distance|inverse distance|uniform"));
+    add_selection(prm, "Diffusivity", diffusivity,
+                  {{"quadratic inverse distance", Diffusivity::quadratic_inverse_distance},
+                   {"inverse distance", Diffusivity::inverse_distance},
+                   {"uniform", Diffusivity::uniform}},
+                  "Laplace: gamma_f = 1 / max(r_f, d_fn)^2 with r_f the distance of the face "
+                  "centre from the nearest moving-patch face (quadratic inverse distance), "
+                  "1 / max(r_f, d_fn) (inverse distance: spreads the deformation more evenly "
+                  "in narrow channels), or 1 (uniform).");
     prm.add_parameter("Non-orthogonal correctors", non_orthogonal_correctors,
                       "Laplace: deferred-correction solves of Eq. 19's non-orthogonal part per "
                       "motion.",
@@ -56,20 +62,22 @@ namespace fvfsi
 
   template <int dim>
   MeshMotion<dim>::MeshMotion(const FVGeometry<dim>& reference, const MeshParameters& mesh_parameters,
-                              const MeshMotionParameters& parameters)
+                              const MeshMotionParameters& parameters, const TimeControl& clock)
     : reference(reference)
     , prm(parameters)
+    , clock(clock)
     , laplacian(reference)
     , vertex_interpolation(reference)
+    , gauss_green(reference)
     , solver(parameters.solver)
     , vertex_dofs(reference.triangulation())
   {
-    if (prm.type == "prescribed")
+    if (prm.type == MeshMotionParameters::Type::prescribed)
     {
       prescribed = std::make_unique<FunctionParser<dim>>(dim);
       initialize_function(*prescribed, prm.displacement, "Mesh motion/Displacement");
     }
-    else if (prm.type == "Laplace")
+    else if (prm.type == MeshMotionParameters::Type::laplace)
     {
       setup_patches(mesh_parameters);
       compute_diffusivity();
@@ -97,26 +105,20 @@ namespace fvfsi
             for (unsigned int j = 0; j < dim; ++j)
               vertex_dof[cell->vertex_index(v)][j] = cell->vertex_dof_index(v, j);
     }
-    else if (prm.type != "none")
-      throw std::runtime_error("Mesh motion/Type: unknown type `" + prm.type + "`");
     d_vertex.assign(reference.vertices().size(), Tensor<1, dim>());
   }
 
   template <int dim>
   void MeshMotion<dim>::setup_patches(const MeshParameters& mesh_parameters)
   {
-    for (const auto& item : Utilities::split_string_list(prm.moving_patches, '|'))
+    for (const auto& [name, expression] :
+         parse_named_values(prm.moving_patches, "Mesh motion/Moving patches"))
     {
-      const auto colon = item.find(':');
-      if (colon == std::string::npos)
-        throw std::runtime_error("Mesh motion/Moving patches: `" + item +
-                                 "` is not `patch: expressions`");
       MovingPatch patch;
-      patch.name = Utilities::trim(item.substr(0, colon));
-      patch.id = mesh_parameters.patch_id(patch.name);
+      patch.name = name;
+      patch.id = mesh_parameters.patch_id(name);
       patch.expression = std::make_unique<FunctionParser<dim>>(dim);
-      initialize_function(*patch.expression, Utilities::trim(item.substr(colon + 1)),
-                          "Mesh motion/Moving patches");
+      initialize_function(*patch.expression, expression, "Mesh motion/Moving patches");
       moving.push_back(std::move(patch));
     }
     if (moving.empty())
@@ -140,7 +142,8 @@ namespace fvfsi
   void MeshMotion<dim>::compute_diffusivity()
   {
     gamma.assign(reference.faces.size(), 1.0);
-    if (prm.diffusivity == "uniform")
+    using Diffusivity = MeshMotionParameters::Diffusivity;
+    if (prm.diffusivity == Diffusivity::uniform)
       return;
     // Centres of all moving-patch faces, from every rank, in an R-tree for nearest queries.
     std::vector<Point<dim>> local;
@@ -159,7 +162,7 @@ namespace fvfsi
       std::vector<Point<dim>> nearest;
       tree.query(boost::geometry::index::nearest(face.centre, 1), std::back_inserter(nearest));
       const double r = std::max(face.centre.distance(nearest[0]), face.d_n);
-      gamma[f] = prm.diffusivity == "inverse distance" ? 1 / r : 1 / (r * r);
+      gamma[f] = prm.diffusivity == Diffusivity::inverse_distance ? 1 / r : 1 / (r * r);
     }
   }
 
@@ -190,7 +193,7 @@ namespace fvfsi
   void MeshMotion<dim>::set_patch_displacement(const std::string& name,
                                                const std::vector<Tensor<1, dim>>& displacement)
   {
-    if (prm.type != "Laplace")
+    if (prm.type != MeshMotionParameters::Type::laplace)
       throw std::runtime_error("Mesh motion: set_patch_displacement needs Type = Laplace");
     AssertDimension(displacement.size(), reference.vertices().size());
     MovingPatch& patch = moving_patch(name);
@@ -225,7 +228,6 @@ namespace fvfsi
     // deferred non-orthogonal corrections, then the vertex values by least squares (App. B).
     linear_iterations = 0;
     std::vector<double> vertex_values(d_vertex.size());
-    CellVector rhs = reference.make_cell_vector();
     for (unsigned int j = 0; j < dim; ++j)
     {
       rhs_boundary = 0;
@@ -241,14 +243,17 @@ namespace fvfsi
         if (face.kind == FaceKind::boundary) // Eq. 23, as Laplacian::assemble adds it
           rhs_boundary.local_element(face.P) += gamma[f] * face.area / face.d_n * value;
       }
-      for (unsigned int k = 0; k <= prm.non_orthogonal_correctors; ++k)
-      {
-        rhs = rhs_boundary;
-        laplacian.add_correction(gamma, bc, grad_d[j], rhs);
-        linear_iterations += solver.solve(matrix, d_cell[j], rhs, "mesh motion, component " + std::to_string(j));
-        vertex_interpolation.interpolate(d_cell[j], bc.value, vertex_values);
-        gauss_green_gradient(reference, vertex_values, grad_d[j]);
-      }
+      DeferredCorrection control;
+      control.max_iterations = prm.non_orthogonal_correctors + 1;
+      const auto result = solve_deferred_correction(
+        control, solver, matrix, rhs_boundary, d_cell[j],
+        [&](CellVector& rhs) { laplacian.add_correction(gamma, bc, grad_d[j], rhs); },
+        [&]() {
+          vertex_interpolation.interpolate(d_cell[j], bc.value, vertex_values);
+          gauss_green.compute(vertex_values, grad_d[j]);
+        },
+        "mesh motion, component " + std::to_string(j));
+      linear_iterations += result.linear_iterations;
       for (const unsigned int v : vertex_interpolation.vertices())
         if (boundary_vertex[v] < 0)
           d_vertex[v][j] = vertex_values[v];
@@ -275,10 +280,11 @@ namespace fvfsi
   }
 
   template <int dim>
-  std::vector<Point<dim>> MeshMotion<dim>::vertex_positions(const double t)
+  std::vector<Point<dim>> MeshMotion<dim>::vertex_positions()
   {
+    const double t = clock.time();
     std::vector<Point<dim>> x = reference.vertices();
-    if (prm.type == "prescribed")
+    if (prm.type == MeshMotionParameters::Type::prescribed)
     {
       prescribed->set_time(t);
       for (unsigned int v = 0; v < x.size(); ++v)
@@ -286,7 +292,7 @@ namespace fvfsi
           x[v][j] += prescribed->value(reference.vertices()[v], j);
       return x;
     }
-    if (prm.type == "Laplace")
+    if (prm.type == MeshMotionParameters::Type::laplace)
     {
       boundary_vertex_displacements(t);
       solve_laplace();
@@ -296,6 +302,34 @@ namespace fvfsi
     return x;
   }
 
+  template <int dim>
+  double min_volume_ratio(const FVGeometry<dim>& moved, const FVGeometry<dim>& reference,
+                          const double t)
+  {
+    double min_ratio = std::numeric_limits<double>::max();
+    Point<dim> worst;
+    for (unsigned int c = 0; c < moved.n_owned_cells(); ++c)
+      if (moved.cell_volume[c] / reference.cell_volume[c] < min_ratio)
+      {
+        min_ratio = moved.cell_volume[c] / reference.cell_volume[c];
+        worst = reference.centroid[c];
+      }
+    const auto stats = Utilities::MPI::min_max_avg(min_ratio, moved.comm());
+    worst = Utilities::MPI::broadcast(moved.comm(), worst, stats.min_index);
+    if (stats.min > 0)
+      return stats.min;
+    std::ostringstream where;
+    where << worst;
+    throw std::runtime_error("Mesh motion: a cell is inverted (volume <= 0) at t = " +
+                             Utilities::to_string(t) + " s, the cell with reference centroid (" +
+                             where.str() +
+                             ") m; the displacement is too large for this mesh (try another Mesh "
+                             "motion/Diffusivity, see doc/results/mesh_motion.md, or a finer "
+                             "mesh near the moving patches)");
+  }
+
+  template double min_volume_ratio(const FVGeometry<2>&, const FVGeometry<2>&, double);
+  template double min_volume_ratio(const FVGeometry<3>&, const FVGeometry<3>&, double);
   template class MeshMotion<2>;
   template class MeshMotion<3>;
 } // namespace fvfsi

@@ -1,13 +1,9 @@
 #include <deal.II/base/utilities.h>
 
-#include <fvfsi/apps/fsi_scene.h>
-#include <fvfsi/io/vtu_output.h>
 #include <fvfsi/mesh/mesh_builder.h>
+#include <fvfsi/scenes/fsi_scene.h>
 
 #include <cmath>
-#include <fstream>
-#include <iomanip>
-#include <limits>
 #include <stdexcept>
 
 namespace fvfsi
@@ -16,24 +12,6 @@ namespace fvfsi
 
   namespace
   {
-    template <int dim>
-    std::vector<double> flatten(const std::vector<Tensor<1, dim>>& x)
-    {
-      std::vector<double> y;
-      for (const auto& t : x)
-        for (unsigned int d = 0; d < dim; ++d)
-          y.push_back(t[d]);
-      return y;
-    }
-    template <int dim>
-    std::vector<Tensor<1, dim>> unflatten(const std::vector<double>& y)
-    {
-      std::vector<Tensor<1, dim>> x(y.size() / dim);
-      for (unsigned int i = 0; i < x.size(); ++i)
-        for (unsigned int d = 0; d < dim; ++d)
-          x[i][d] = y[i * dim + d];
-      return x;
-    }
     std::vector<unsigned int> patch_ids(const MeshParameters& mesh, const std::vector<std::string>& names)
     {
       std::vector<unsigned int> ids;
@@ -57,39 +35,34 @@ namespace fvfsi
   }
 
   template <int dim>
-  FsiScene<dim>::FsiScene(const MeshParameters& fluid_mesh, const FluidParameters& fluid_parameters,
-                          const FluidSceneParameters& fluid_scene, const MeshParameters& solid_mesh,
-                          const SolidParameters& solid_parameters,
-                          const SolidSceneParameters& solid_scene,
-                          const FsiSceneParameters& fsi_parameters, MPI_Comm comm,
+  FsiScene<dim>::FsiScene(const FsiSceneInput& input, MPI_Comm comm,
                           const std::string& prm_directory, const std::string& output_directory)
     : comm(comm)
-    , fluid_mesh_parameters(fluid_mesh)
-    , solid_mesh_parameters(solid_mesh)
-    , fluid_parameters(fluid_parameters)
-    , fluid_scene_parameters(fluid_scene)
-    , solid_parameters(solid_parameters)
-    , solid_scene_parameters(solid_scene)
-    , prm(fsi_parameters)
+    , fluid_mesh_parameters(input.fluid_mesh)
+    , solid_mesh_parameters(input.solid_mesh)
+    , fluid_parameters(input.fluid)
+    , fluid_scene_parameters(input.fluid_scene)
+    , solid_parameters(input.solid)
+    , solid_scene_parameters(input.solid_scene)
+    , prm(input.fsi)
     , prm_directory(prm_directory)
     , output_directory(output_directory)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+    , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , clock(input.time)
     , fluid_tria(comm)
     , solid_tria(comm)
-    , probes(solid_scene.probes, "Solid scene/Probes")
+    , probes(input.solid_scene.probes, "Solid scene/Probes")
   {
     if (!fluid_parameters.transient)
       throw std::runtime_error("FSI: the fluid must be transient (Fluid/Transient = true)");
-    if (fluid_scene.mesh_motion.type != "Laplace")
+    if (fluid_scene_parameters.mesh_motion.type != MeshMotionParameters::Type::laplace)
       throw std::runtime_error("FSI: the fluid mesh must follow the interface: set Mesh motion/Type = "
                                "Laplace and list the fluid interface patches in Mesh motion/Moving "
                                "patches");
     if (prm.fluid_interface.empty() || prm.solid_interface.empty())
       throw std::runtime_error("FSI: name the interface patches (FSI/Fluid interface and FSI/Solid "
                                "interface)");
-    // One clock: the solid steps with the fluid's time step (a steady solid is quasi-static).
-    this->solid_parameters.time_step = fluid_parameters.time_step;
-    this->solid_parameters.end_time = fluid_parameters.end_time;
   }
 
   template <int dim>
@@ -98,15 +71,19 @@ namespace fvfsi
     make_mesh(fluid_mesh_parameters, fluid_tria, prm_directory);
     fluid_fv = std::make_unique<FVGeometry<dim>>(fluid_tria);
     fluid_reference_fv = std::make_unique<FVGeometry<dim>>(fluid_tria);
-    fluid = std::make_unique<FluidSolver<dim>>(*fluid_fv, fluid_mesh_parameters, fluid_parameters);
+    fluid = std::make_unique<FluidSolver<dim>>(*fluid_fv, fluid_mesh_parameters, fluid_parameters, clock);
     motion = std::make_unique<MeshMotion<dim>>(*fluid_reference_fv, fluid_mesh_parameters,
-                                               fluid_scene_parameters.mesh_motion);
+                                               fluid_scene_parameters.mesh_motion, clock);
 
     make_mesh(solid_mesh_parameters, solid_tria, prm_directory);
     solid_fv = std::make_unique<FVGeometry<dim>>(solid_tria);
-    solid = std::make_unique<SolidSolver<dim>>(*solid_fv, solid_mesh_parameters, solid_parameters);
+    solid = std::make_unique<SolidSolver<dim>>(*solid_fv, solid_mesh_parameters, solid_parameters, clock);
     probes.locate(*solid_fv);
+  }
 
+  template <int dim>
+  void FsiScene<dim>::make_interface()
+  {
     // The interface, whole on every rank, and the maps between its two sides (computed once,
     // on the undeformed meshes, where the two sides coincide).
     fluid_zone = std::make_unique<InterfaceZone<dim>>(
@@ -116,44 +93,61 @@ namespace fvfsi
     traction_map = std::make_unique<FaceInterpolation<dim>>(*fluid_zone, *solid_zone);
     displacement_map = std::make_unique<VertexProjection<dim>>(*solid_zone, *fluid_zone);
     acceleration = std::make_unique<CouplingAcceleration>(prm.coupling);
-    d.assign(fluid_zone->n_points(), Tensor<1, dim>());
+    d.reinit(dim * fluid_zone->n_points());
     d_old = d_older = d;
   }
 
   template <int dim>
-  void FsiScene<dim>::move_fluid_mesh(const std::vector<Tensor<1, dim>>& displacement)
+  void FsiScene<dim>::make_output()
   {
-    // Every interface vertex this rank's cells touch (ghost cells' too), found in the zone by
-    // its reference position.
-    std::vector<Tensor<1, dim>> vertex_displacement(fluid_fv->vertices().size());
-    for (const auto& patch : prm.fluid_interface)
+    fluid_output = std::make_unique<VtuOutput<dim>>(*fluid_fv, output_directory, "fluid");
+    solid_output = std::make_unique<VtuOutput<dim>>(*solid_fv, output_directory, "solid");
+    std::vector<std::string> columns = {"t", "coupling_iterations", "relative_residual", "drag", "lift"};
+    const char* axis[] = {"x", "y", "z"};
+    for (unsigned int i = 0; i < probes.size(); ++i)
+      for (unsigned int c = 0; c < dim; ++c)
+        columns.push_back(std::string("u") + axis[c] + "_" + probes.name(i));
+    history = std::make_unique<HistoryFile>(output_directory + "/fsi_history.txt", columns, comm);
+  }
+
+  template <int dim>
+  void FsiScene<dim>::move_fluid_mesh(const InterfaceVector& displacement)
+  {
     {
-      for (const unsigned int v : motion->patch_vertices(patch))
-        vertex_displacement[v] = displacement[fluid_zone->point_index(fluid_reference_fv->vertices()[v])];
-      motion->set_patch_displacement(patch, vertex_displacement);
+      TimerOutput::Scope scope(timer, "mesh motion");
+      // Every interface vertex this rank's cells touch (ghost cells' too), found in the zone by
+      // its reference position.
+      std::vector<Tensor<1, dim>> vertex_displacement(fluid_fv->vertices().size());
+      for (const auto& patch : prm.fluid_interface)
+      {
+        for (const unsigned int v : motion->patch_vertices(patch))
+          vertex_displacement[v] = point_value<dim>(
+            displacement, fluid_zone->point_index(fluid_reference_fv->vertices()[v]));
+        motion->set_patch_displacement(patch, vertex_displacement);
+      }
     }
-    const std::vector<Point<dim>> x = motion->vertex_positions(fluid->time());
-    // Swept volumes from the positions at t^n (Eq. 3 holds over the whole time step, whatever
-    // the iteration), then the geometry at the new positions.
-    fluid_fv->reinit(vertices_old);
-    const std::vector<double> swept = fluid_fv->swept_volumes(x);
+    const std::vector<Point<dim>> x = [&] {
+      TimerOutput::Scope scope(timer, "mesh motion");
+      return motion->vertex_positions();
+    }();
+    TimerOutput::Scope scope(timer, "geometry");
+    // Swept volumes from the positions at t^n (Eq. 3 holds over the whole time step, whatever the
+    // iteration), then the geometry once, at the new positions.
+    const std::vector<double> swept = fluid_fv->swept_volumes(vertices_old, x);
     fluid_fv->reinit(x);
     for (const auto& cell : fluid_tria.active_cell_iterators())
       if (!cell->is_artificial())
         for (const unsigned int v : cell->vertex_indices())
           cell->vertex(v) = x[cell->vertex_index(v)];
-    double min_volume = std::numeric_limits<double>::max();
-    for (unsigned int c = 0; c < fluid_fv->n_owned_cells(); ++c)
-      min_volume = std::min(min_volume, fluid_fv->cell_volume[c]);
-    if (!(Utilities::MPI::min(min_volume, comm) > 0))
-      throw std::runtime_error("FSI: a fluid cell is inverted (volume <= 0): the interface "
-                               "displacement is too large for this fluid mesh");
+    result.min_volume_ratio = std::min(result.min_volume_ratio,
+                                       min_volume_ratio(*fluid_fv, *fluid_reference_fv, clock.time()));
     fluid->move_mesh(swept);
   }
 
   template <int dim>
   void FsiScene<dim>::transfer_tractions()
   {
+    TimerOutput::Scope scope(timer, "traction transfer");
     std::vector<Tensor<1, dim>> fluid_traction(fluid_fv->faces.size());
     for (const auto& [f, i] : fluid_zone->local_faces())
       fluid_traction[f] = fluid->wall_traction(f);
@@ -165,41 +159,56 @@ namespace fvfsi
   }
 
   template <int dim>
-  std::vector<Tensor<1, dim>> FsiScene<dim>::solid_interface_displacement() const
+  InterfaceVector FsiScene<dim>::solid_interface_displacement() const
   {
+    TimerOutput::Scope scope(timer, "displacement transfer");
     return displacement_map->interpolate(
       solid_zone->gather_point_field(solid->vertex_displacements()));
   }
 
   template <int dim>
+  InterfaceVector FsiScene<dim>::coupling_iteration(const InterfaceVector& displacement)
+  {
+    move_fluid_mesh(displacement); // 2a: the fluid mesh follows d
+    {
+      TimerOutput::Scope scope(timer, "fluid");
+      fluid->solve_current_step(); // 2b
+    }
+    transfer_tractions(); // 2c: Eqs 32-33
+    {
+      TimerOutput::Scope scope(timer, "solid");
+      solid->solve_current_step(); // 2d
+    }
+    return solid_interface_displacement(); // 2e: d~ (section 3.5.2)
+  }
+
+  template <int dim>
   unsigned int FsiScene<dim>::solve_time_step()
   {
+    // 1: the new time level, and the predictor: linear extrapolation of d.
+    clock.advance();
     fluid->begin_time_step();
     solid->begin_time_step();
     acceleration->new_time_step();
     vertices_old = fluid_fv->vertices();
-    // Predictor: linear extrapolation of the interface displacement.
-    const unsigned int step = fluid->step();
-    for (unsigned int i = 0; i < d.size(); ++i)
-      d[i] = step > 2 ? 2 * d_old[i] - d_older[i] : d_old[i];
+    d = d_old;
+    if (clock.step() > 2)
+      d.sadd(2, -1, d_older); // 2 d^n - d^(n-1)
 
     double residual = 0;
     for (unsigned int k = 1; k <= prm.coupling.max_iterations; ++k)
     {
-      std::vector<double> next;
+      InterfaceVector next;
       try
       {
-        move_fluid_mesh(d);
-        fluid->solve_current_step();
-        transfer_tractions();
-        solid->solve_current_step();
-        next = acceleration->next(flatten(d), flatten(solid_interface_displacement()));
+        const InterfaceVector d_tilde = coupling_iteration(d); // 2a-2e
+        TimerOutput::Scope scope(timer, "acceleration");
+        next = acceleration->next(d, d_tilde); // 2f: Eqs 30-31 or IQN-ILS
       }
       catch (const std::exception& e)
       {
         throw std::runtime_error(
-          "FSI: at time step " + std::to_string(step) + " (t = " + Utilities::to_string(fluid->time()) +
-          " s), coupling iteration " + std::to_string(k) +
+          "FSI: at " + clock.step_name() + ", coupling iteration " + std::to_string(k) +
           (k > 1 ? " (relative interface residual before it: " + Utilities::to_string(residual) + ")"
                  : std::string()) +
           ": " + e.what() +
@@ -209,22 +218,24 @@ namespace fvfsi
       }
       residual = acceleration->relative_residual();
       if (!std::isfinite(residual))
-        throw std::runtime_error("FSI: the interface residual is not finite at time step " +
-                                 std::to_string(step) + ", coupling iteration " + std::to_string(k));
+        throw std::runtime_error("FSI: the interface residual is not finite at " + clock.step_name() +
+                                 ", coupling iteration " + std::to_string(k));
       if (residual <= prm.coupling.tolerance)
       {
+        // 3: accept the step.
         fluid->end_time_step();
+        solid->end_time_step();
         d_older = d_old;
         d_old = d;
         record_time_history(k, residual);
         return k;
       }
-      d = unflatten<dim>(next);
+      d = next;
     }
     throw std::runtime_error(
-      "FSI: the coupling iterations did not converge at time step " + std::to_string(step) +
-      " (t = " + Utilities::to_string(fluid->time()) + " s): relative interface residual " +
-      Utilities::to_string(residual) + " after " + std::to_string(prm.coupling.max_iterations) +
+      "FSI: the coupling iterations did not converge at " + clock.step_name() +
+      ": relative interface residual " + Utilities::to_string(residual) + " after " +
+      std::to_string(prm.coupling.max_iterations) +
       " iterations (Coupling/Method = IQN-ILS converges where relaxation does not; or raise "
       "Coupling/Max iterations)");
   }
@@ -244,76 +255,41 @@ namespace fvfsi
     Tensor<1, dim> force;
     for (const auto& patch : fluid_scene_parameters.force_patches)
       force += fluid->patch_force(fluid_mesh_parameters.patch_id(patch));
-    std::vector<Tensor<1, dim>> u;
-    for (unsigned int i = 0; i < probes.size(); ++i)
-      u.push_back(solid_probe(i));
-    history_t.push_back(fluid->time());
+    history_t.push_back(clock.time());
     history_drag.push_back(force[0]);
     history_lift.push_back(force[1]);
-    if (Utilities::MPI::this_mpi_process(comm) != 0)
-      return;
-    std::ofstream out(output_directory + "/fsi_history.txt",
-                      history_t.size() == 1 ? std::ios::trunc : std::ios::app);
-    const char* axis[] = {"x", "y", "z"};
-    if (history_t.size() == 1)
+    std::vector<double> line = {clock.time(), double(iterations), residual, force[0], force[1]};
+    for (unsigned int i = 0; i < probes.size(); ++i)
     {
-      out << "# t coupling_iterations relative_residual drag lift";
-      for (unsigned int i = 0; i < probes.size(); ++i)
-        for (unsigned int c = 0; c < dim; ++c)
-          out << " u" << axis[c] << "_" << probes.name(i);
-      out << "\n";
+      const Tensor<1, dim> u = solid_probe(i);
+      line.insert(line.end(), &u[0], &u[0] + dim);
     }
-    out << std::setprecision(10) << fluid->time() << ' ' << iterations << ' ' << residual << ' '
-        << force[0] << ' ' << force[1];
-    for (const auto& x : u)
-      for (unsigned int c = 0; c < dim; ++c)
-        out << ' ' << x[c];
-    out << "\n";
+    history->write_line(line);
   }
 
   template <int dim>
   void FsiScene<dim>::output_results() const
   {
-    const char* axis[] = {"x", "y", "z"};
-    {
-      std::vector<CellVector> fields(dim + 1, fluid_fv->make_cell_vector());
-      for (unsigned int c = 0; c < fluid_fv->n_owned_cells(); ++c)
-      {
-        for (unsigned int j = 0; j < dim; ++j)
-          fields[j].local_element(c) = fluid->velocity()[c][j];
-        fields[dim].local_element(c) =
-          fluid_parameters.rho * fluid->kinematic_pressure().local_element(c);
-      }
-      std::vector<std::pair<std::string, const CellVector*>> named;
-      for (unsigned int j = 0; j < dim; ++j)
-        named.emplace_back(std::string("u_") + axis[j], &fields[j]);
-      named.emplace_back("p", &fields[dim]);
-      for (auto& f : fields)
-        f.update_ghost_values();
-      VtuOutput<dim>(*fluid_fv, output_directory, "fluid").write(named, fluid->step(), fluid->time());
-    }
-    std::vector<CellVector> fields(dim, solid_fv->make_cell_vector());
-    for (unsigned int c = 0; c < solid_fv->n_owned_cells(); ++c)
-      for (unsigned int j = 0; j < dim; ++j)
-        fields[j].local_element(c) = solid->displacement()[c][j];
-    std::vector<std::pair<std::string, const CellVector*>> named;
-    for (unsigned int j = 0; j < dim; ++j)
-      named.emplace_back(std::string("u_") + axis[j], &fields[j]);
-    for (auto& f : fields)
-      f.update_ghost_values();
-    VtuOutput<dim>(*solid_fv, output_directory, "solid").write(named, fluid->step(), fluid->time());
+    OutputFields<dim> fluid_fields(*fluid_fv), solid_fields(*solid_fv);
+    fluid->add_output_fields(fluid_fields);
+    solid->add_output_fields(solid_fields);
+    fluid_output->write(fluid_fields, clock.step(), clock.time());
+    solid_output->write(solid_fields, clock.step(), clock.time());
   }
 
   template <int dim>
   void FsiScene<dim>::run()
   {
     make_grids();
+    make_interface();
+    make_output();
     pcout << "fvfsi: FSI " << dim << "D, fluid " << fluid_fv->n_global_cells() << " cells, solid "
-          << solid_fv->n_global_cells() << " cells (" << solid_parameters.model << "), interface "
-          << fluid_zone->n_faces() << " fluid / " << solid_zone->n_faces() << " solid faces, coupling "
-          << prm.coupling.method << "\n";
-    const unsigned int total =
-      static_cast<unsigned int>(std::round(fluid_parameters.end_time / fluid_parameters.time_step));
+          << solid_fv->n_global_cells() << " cells ("
+          << selection_name(SolidParameters::model_names, solid_parameters.model) << "), interface "
+          << fluid_zone->n_faces() << " fluid / " << solid_zone->n_faces()
+          << " solid faces, coupling "
+          << selection_name(CouplingParameters::method_names, prm.coupling.method) << "\n";
+    const unsigned int total = clock.n_steps();
     for (unsigned int step = 1; step <= total; ++step)
     {
       unsigned int iterations = 0;
@@ -331,7 +307,7 @@ namespace fvfsi
       result.total_coupling_iterations += iterations;
       result.max_coupling_iterations = std::max(result.max_coupling_iterations, iterations);
       if (step % fluid_scene_parameters.progress_interval == 0 || step == total)
-        pcout << "fvfsi: FSI step " << step << "/" << total << ", t = " << fluid->time() << " s, "
+        pcout << "fvfsi: FSI step " << step << "/" << total << ", t = " << clock.time() << " s, "
               << iterations << " coupling iterations (mean "
               << double(result.total_coupling_iterations) / step << ")\n";
       if (fluid_scene_parameters.output_interval > 0 && step % fluid_scene_parameters.output_interval == 0)
@@ -339,6 +315,7 @@ namespace fvfsi
     }
     if (fluid_scene_parameters.output_interval == 0)
       output_results();
+    timer.print_summary();
   }
 
   template <int dim>
@@ -350,6 +327,7 @@ namespace fvfsi
     summary.set_result("time_steps", result.n_time_steps);
     summary.set_result("coupling_iterations", result.total_coupling_iterations);
     summary.set_result("max_coupling_iterations_per_step", result.max_coupling_iterations);
+    summary.set_result("min_cell_volume_ratio", result.min_volume_ratio);
     if (!fluid_scene_parameters.force_patches.empty() && !history_drag.empty())
     {
       summary.set_result("drag", history_drag.back());
@@ -361,6 +339,8 @@ namespace fvfsi
       summary.set_result("point_" + probes.name(i) + "_displacement",
                          std::vector<double>(&u[0], &u[0] + dim));
     }
+    for (const auto& [section, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
+      summary.set_timing(section, seconds);
   }
 
   template class FsiScene<2>;

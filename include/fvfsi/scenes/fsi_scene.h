@@ -2,31 +2,38 @@
 // The fluid-structure interaction scene: the partitioned, strongly coupled Dirichlet-Neumann
 // procedure of the paper's Algorithm 1. Per time step:
 //
-//   1. both solvers move to the next time level; the interface displacement d is predicted;
-//   2. iterate: move the fluid mesh (Laplace mesh motion with the interface vertices at d),
-//      solve the fluid, transfer its wall tractions to the solid faces (Eqs 32-33), solve the
-//      solid, transfer its vertex displacements to the fluid interface vertices (3.5.2), and
-//      update d from the residual r = d~ - d (Eq. 30) by fixed relaxation, Aitken or IQN-ILS,
-//      until |r| <= tolerance |d~|.
+//   1. the clock advances; both solvers move to the new time level; the interface displacement d
+//      is predicted (linear extrapolation);
+//   2. iterate: move the fluid mesh (Laplace mesh motion with the interface vertices at d), solve
+//      the fluid, transfer its wall tractions to the solid faces (Eqs 32-33), solve the solid,
+//      transfer its vertex displacements to the fluid interface vertices (3.5.2), and update d
+//      from the residual r = d~ - d (Eq. 30) by fixed relaxation, Aitken or IQN-ILS, until
+//      |r| <= tolerance |d~|;
+//   3. both solvers accept the step.
+// solve_time_step() in fsi_scene.cc is this list, line by line.
 //
 // The fluid and the solid have their own meshes (`Mesh` and `Solid mesh`), decomposed
 // independently over the same ranks; the coupling sees only the two interfaces, gathered whole on
-// every rank (InterfaceZone). Neither solver knows about the other.
+// every rank (InterfaceZone). Neither solver knows about the other; all three read one clock.
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>
 
-#include <fvfsi/apps/fluid_scene.h>
-#include <fvfsi/apps/solid_scene.h>
+#include <fvfsi/ale/mesh_motion.h>
+#include <fvfsi/base/time_control.h>
 #include <fvfsi/coupling/coupling_acceleration.h>
 #include <fvfsi/coupling/face_interpolation.h>
 #include <fvfsi/coupling/interface_zone.h>
 #include <fvfsi/coupling/vertex_projection.h>
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/fv/point_probes.h>
+#include <fvfsi/io/history_file.h>
 #include <fvfsi/io/summary.h>
-#include <fvfsi/mesh/mesh_motion.h>
+#include <fvfsi/io/vtu_output.h>
+#include <fvfsi/scenes/fluid_scene.h>
+#include <fvfsi/scenes/solid_scene.h>
 #include <fvfsi/solid/solid_solver.h>
 
 #include <memory>
@@ -50,39 +57,54 @@ namespace fvfsi
   {
     unsigned int n_time_steps = 0;
     unsigned int total_coupling_iterations = 0, max_coupling_iterations = 0;
+    double min_volume_ratio = 1; ///< min over cells and steps of V_P / V_P(reference), fluid
+  };
+
+  /// The parameters an FSI scene reads.
+  struct FsiSceneInput
+  {
+    const MeshParameters &fluid_mesh, &solid_mesh;
+    const FluidParameters& fluid;
+    const FluidSceneParameters& fluid_scene;
+    const SolidParameters& solid;
+    const SolidSceneParameters& solid_scene;
+    const FsiSceneParameters& fsi;
+    const TimeParameters& time;
   };
 
   template <int dim>
   class FsiScene
   {
   public:
-    FsiScene(const MeshParameters& fluid_mesh, const FluidParameters& fluid_parameters,
-             const FluidSceneParameters& fluid_scene, const MeshParameters& solid_mesh,
-             const SolidParameters& solid_parameters, const SolidSceneParameters& solid_scene,
-             const FsiSceneParameters& fsi_parameters, MPI_Comm comm,
-             const std::string& prm_directory, const std::string& output_directory);
+    FsiScene(const FsiSceneInput& input, MPI_Comm comm, const std::string& prm_directory,
+             const std::string& output_directory);
 
     void run();
     void write_summary(Summary& summary) const;
     const FsiResults& results() const { return result; }
     const SolidSolver<dim>& solid_solver() const { return *solid; }
     const FluidSolver<dim>& fluid_solver() const { return *fluid; }
+    const TimeControl& time() const { return clock; }
     /// The interface displacement at the fluid interface vertices (zone numbering) [m].
-    const std::vector<dealii::Tensor<1, dim>>& interface_displacement() const { return d; }
+    const InterfaceVector& interface_displacement() const { return d; }
     /// The displacement at solid probe i [m] (collective).
     dealii::Tensor<1, dim> solid_probe(unsigned int i) const;
     const PointProbes<dim>& solid_probes() const { return probes; }
 
   private:
     void make_grids();
+    void make_interface();
+    void make_output();
     /// One time step of Algorithm 1; returns the coupling iterations.
     unsigned int solve_time_step();
+    /// Steps 2a-2e of Algorithm 1 for the displacement d; returns the solid's answer d~.
+    InterfaceVector coupling_iteration(const InterfaceVector& d);
     /// Move the fluid mesh so that its interface vertices sit at reference + d.
-    void move_fluid_mesh(const std::vector<dealii::Tensor<1, dim>>& displacement);
+    void move_fluid_mesh(const InterfaceVector& displacement);
     /// Fluid wall tractions -> solid external tractions.
     void transfer_tractions();
     /// Solid vertex displacements -> fluid interface vertices (zone numbering).
-    std::vector<dealii::Tensor<1, dim>> solid_interface_displacement() const;
+    InterfaceVector solid_interface_displacement() const;
     void record_time_history(unsigned int iterations, double residual);
     void output_results() const;
 
@@ -95,6 +117,9 @@ namespace fvfsi
     FsiSceneParameters prm;
     std::string prm_directory, output_directory;
     dealii::ConditionalOStream pcout;
+    /// Wall time per part of Algorithm 1 (printed at the end, summary.json `timing`).
+    mutable dealii::TimerOutput timer;
+    TimeControl clock;
 
     dealii::parallel::distributed::Triangulation<dim> fluid_tria, solid_tria;
     std::unique_ptr<FVGeometry<dim>> fluid_fv, fluid_reference_fv, solid_fv;
@@ -106,10 +131,12 @@ namespace fvfsi
     std::unique_ptr<VertexProjection<dim>> displacement_map;
     std::unique_ptr<CouplingAcceleration> acceleration;
     PointProbes<dim> probes;
+    std::unique_ptr<VtuOutput<dim>> fluid_output, solid_output;
+    std::unique_ptr<HistoryFile> history;
 
-    std::vector<dealii::Point<dim>> vertices_old;  ///< fluid vertex positions at t^n
+    std::vector<dealii::Point<dim>> vertices_old; ///< fluid vertex positions at t^n
     /// Interface displacement at the fluid interface vertices at t^(n+1), t^n, t^(n-1) [m].
-    std::vector<dealii::Tensor<1, dim>> d, d_old, d_older;
+    InterfaceVector d, d_old, d_older;
     std::vector<double> history_t, history_drag, history_lift;
     FsiResults result;
   };

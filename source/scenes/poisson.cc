@@ -1,10 +1,11 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <fvfsi/apps/poisson.h>
-#include <fvfsi/base/exceptions.h>
-#include <fvfsi/io/vtu_output.h>
+#include <fvfsi/base/parsed_function.h>
+#include <fvfsi/base/selection.h>
+#include <fvfsi/fv/deferred_correction.h>
 #include <fvfsi/mesh/mesh_builder.h>
+#include <fvfsi/scenes/poisson.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -28,15 +29,15 @@ namespace fvfsi
     prm.add_parameter("Neumann patches", neumann_patches,
                       "Patches (Mesh/Patch names) with the normal gradient of the exact solution "
                       "prescribed; all other patches are Dirichlet.");
-    prm.add_parameter("Face gradient", face_gradient,
-                      "Face normal gradient of the Laplacian: `linear` is Eq. 19 with vertex-based "
-                      "Gauss-Green cell gradients (exact for linear fields; its max error falls only "
-                      "as O(h) on faces between unlike cells of a distorted mesh); `quadratic` adds "
-                      "the Hessian terms and uses the gradient and Hessian of a quadratic "
-                      "least-squares fit over the vertex-neighbour cells (exact for quadratic "
-                      "fields: its max error is second order on distorted meshes too; costs "
-                      "0.4 kB (2D) or 2 kB (3D) more memory per cell).",
-                      Patterns::Selection("linear|quadratic"));
+    add_selection(prm, "Face gradient", face_gradient,
+                  {{"linear", FaceGradient::linear}, {"quadratic", FaceGradient::quadratic}},
+                  "Face normal gradient of the Laplacian: `linear` is Eq. 19 with vertex-based "
+                  "Gauss-Green cell gradients (exact for linear fields; its max error falls only "
+                  "as O(h) on faces between unlike cells of a distorted mesh); `quadratic` adds "
+                  "the Hessian terms and uses the gradient and Hessian of a quadratic "
+                  "least-squares fit over the vertex-neighbour cells (exact for quadratic "
+                  "fields: its max error is second order on distorted meshes too; costs "
+                  "0.4 kB (2D) or 2 kB (3D) more memory per cell).");
     prm.add_parameter("Max correction iterations", max_correction_iterations,
                       "Limit of the deferred non-orthogonal correction iterations.",
                       Patterns::Integer(1));
@@ -45,24 +46,6 @@ namespace fvfsi
                       Patterns::Double(0));
     prm.leave_subsection();
     solver.declare(prm, "Poisson linear solver");
-  }
-
-  template <int dim>
-  void initialize_function(FunctionParser<dim>& f, const std::string& expression,
-                           const std::string& parameter_name)
-  {
-    try
-    {
-      f.initialize(dim == 2 ? "x,y,t" : "x,y,z,t", expression, {{"pi", numbers::PI}}, true);
-      // muparser parses on first use: evaluate once so that a syntax error shows up here.
-      for (unsigned int c = 0; c < f.n_components; ++c)
-        f.value(Point<dim>(), c);
-    }
-    catch (const std::exception& e)
-    {
-      throw std::runtime_error(parameter_name + " = `" + expression + "` is not a valid expression " +
-                               "of " + (dim == 2 ? "x, y, t" : "x, y, z, t") + ": " + concise_message(e));
-    }
   }
 
   template <int dim>
@@ -89,12 +72,23 @@ namespace fvfsi
   {
     make_mesh(mesh_parameters, triangulation, prm_directory);
     fv = std::make_unique<FVGeometry<dim>>(triangulation);
-    const FaceGradient face_gradient = face_gradient_from_string(parameters.face_gradient);
-    if (face_gradient == FaceGradient::quadratic)
-      quadratic_reconstruction = std::make_unique<QuadraticReconstruction<dim>>(*fv);
+    if (parameters.face_gradient == PoissonParameters::FaceGradient::quadratic)
+    {
+      // The fit over the vertex neighbours and the boundary faces that touch the cell, with the
+      // weights (L / |s|)^6 (see quadratic_fit.h).
+      QuadraticFitData data;
+      data.weight_exponent = 6;
+      data.value_faces.assign(fv->faces.size(), false);
+      for (unsigned int f = 0; f < fv->faces.size(); ++f)
+        data.value_faces[f] = fv->faces[f].N == invalid_cell;
+      quadratic_fit = std::make_unique<QuadraticFit<dim>>(*fv, data);
+    }
     else
+    {
       vertex_interpolation = std::make_unique<VertexInterpolation<dim>>(*fv);
-    laplacian = std::make_unique<Laplacian<dim>>(*fv, face_gradient);
+      gauss_green = std::make_unique<GaussGreenGradient<dim>>(*fv);
+    }
+    laplacian = std::make_unique<Laplacian<dim>>(*fv);
   }
 
   template <int dim>
@@ -125,7 +119,7 @@ namespace fvfsi
     phi = fv->make_cell_vector();
     rhs_fixed = fv->make_cell_vector();
     grad = CellGradient<dim>(*fv);
-    if (quadratic_reconstruction)
+    if (quadratic_fit)
       hessian = CellHessian<dim>(*fv);
     laplacian->reinit_matrix(matrix);
   }
@@ -145,67 +139,35 @@ namespace fvfsi
   {
     LinearSolver solver(parameters.solver);
     solver.initialize(matrix);
-    CellVector rhs = fv->make_cell_vector(), phi_old = fv->make_cell_vector();
-    result.linear_iterations = 0;
-    for (unsigned int k = 1; k <= parameters.max_correction_iterations; ++k)
-    {
-      // Right-hand side with the explicit correction from the current gradient, then solve.
-      rhs = rhs_fixed;
-      add_correction(rhs);
-      phi_old = phi;
-      result.linear_iterations += solver.solve(matrix, phi, rhs, "Poisson phi");
-      update_gradients();
-
-      double max_change = 0, max_phi = 0;
-      for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
-      {
-        max_change = std::max(max_change, std::abs(phi.local_element(c) - phi_old.local_element(c)));
-        max_phi = std::max(max_phi, std::abs(phi.local_element(c)));
-      }
-      const double change =
-        Utilities::MPI::max(max_change, comm) / std::max(Utilities::MPI::max(max_phi, comm), 1e-300);
-      if (!std::isfinite(change))
-        throw std::runtime_error("Poisson: phi is not finite after correction iteration " +
-                                 std::to_string(k));
-      result.correction_iterations = k;
-      if (change < parameters.correction_tolerance)
-        return;
-    }
-    pcout << "fvfsi: warning: Poisson correction iterations did not reach the tolerance "
-          << parameters.correction_tolerance << " in " << parameters.max_correction_iterations
-          << " iterations\n";
-  }
-
-  template <int dim>
-  void PoissonProblem<dim>::add_correction(CellVector& rhs) const
-  {
-    if (quadratic_reconstruction)
-      laplacian->add_correction(gamma, bc, grad, hessian, rhs);
-    else
-      laplacian->add_correction(gamma, bc, grad, rhs);
+    DeferredCorrection control;
+    control.max_iterations = parameters.max_correction_iterations;
+    control.tolerance = parameters.correction_tolerance;
+    const auto r = solve_deferred_correction(
+      control, solver, matrix, rhs_fixed, phi,
+      [this](CellVector& rhs) { laplacian->add_correction(gamma, bc, grad, rhs, hessian_or_null()); },
+      [this]() { update_gradients(); }, "Poisson phi");
+    result.correction_iterations = r.iterations;
+    result.linear_iterations = r.linear_iterations;
+    if (!r.converged)
+      pcout << "fvfsi: warning: Poisson correction iterations did not reach the tolerance "
+            << parameters.correction_tolerance << " in " << parameters.max_correction_iterations
+            << " iterations\n";
   }
 
   template <int dim>
   void PoissonProblem<dim>::update_gradients()
   {
-    if (quadratic_reconstruction)
+    // Boundary values (those of Neumann faces from the current grad and hessian), then the
+    // gradient (and Hessian) of the new phi: of the quadratic fit through the cell and boundary
+    // values, or by vertex values (App. B) and Gauss-Green (Eq. 37).
+    const FaceVector boundary_values = laplacian->boundary_values(phi, grad, bc, hessian_or_null());
+    if (quadratic_fit)
     {
-      // g and H of the quadratic fit through the cell values and the boundary-face values (those of
-      // Neumann faces from the previous g and H).
-      quadratic_reconstruction->compute(phi, laplacian->boundary_values(phi, grad, hessian, bc),
-                                        grad, hessian);
+      quadratic_fit->compute(phi, boundary_values, FaceVector(), grad, hessian);
       return;
     }
-    // New vertex values (boundary faces included) and vertex-based Gauss-Green gradient.
-    vertex_interpolation->interpolate(phi, laplacian->boundary_values(phi, grad, bc), vertex_phi);
-    gauss_green_gradient(*fv, vertex_phi, grad);
-  }
-
-  template <int dim>
-  double PoissonProblem<dim>::normal_gradient(const unsigned int f) const
-  {
-    return quadratic_reconstruction ? laplacian->normal_gradient(f, phi, grad, hessian, bc)
-                                    : laplacian->normal_gradient(f, phi, grad, bc);
+    vertex_interpolation->interpolate(phi, boundary_values, vertex_phi);
+    gauss_green->compute(vertex_phi, grad);
   }
 
   template <int dim>
@@ -227,7 +189,7 @@ namespace fvfsi
       Tensor<1, dim> g;
       for (unsigned int d = 0; d < dim; ++d)
         g[d] = exact_gradient.value(face.centre, d);
-      const double e = normal_gradient(f) - face.n * g;
+      const double e = laplacian->normal_gradient(f, phi, grad, bc, hessian_or_null()) - face.n * g;
       double& max = face.N != invalid_cell ? max_gradient_error : max_boundary_gradient_error;
       max = std::max(max, std::abs(e));
       if (face.N != invalid_cell && face.counted_here)
@@ -259,17 +221,13 @@ namespace fvfsi
   template <int dim>
   void PoissonProblem<dim>::output_results(const std::string& directory, Summary& summary) const
   {
-    CellVector exact_values = fv->make_cell_vector(), error = fv->make_cell_vector();
-    for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
-    {
-      exact_values.local_element(c) = exact.value(fv->centroid[c]);
-      error.local_element(c) = phi.local_element(c) - exact_values.local_element(c);
-    }
-    exact_values.update_ghost_values();
-    error.update_ghost_values();
-    VtuOutput<dim>(*fv, directory, "poisson").write({{"phi", &phi}, {"phi_exact", &exact_values},
-                                                     {"error", &error}},
-                                                    0, 0.0);
+    OutputFields<dim> fields(*fv);
+    fields.add("phi", [&](const unsigned int c) { return phi.local_element(c); });
+    fields.add("phi_exact", [&](const unsigned int c) { return exact.value(fv->centroid[c]); });
+    fields.add("error", [&](const unsigned int c) {
+      return phi.local_element(c) - exact.value(fv->centroid[c]);
+    });
+    VtuOutput<dim>(*fv, directory, "poisson").write(fields, 0, 0.0);
     summary.set_result("max_cell_error", result.max_cell_error);
     summary.set_result("l2_cell_error", result.l2_cell_error);
     summary.set_result("max_face_gradient_error", result.max_face_gradient_error);
@@ -282,6 +240,4 @@ namespace fvfsi
 
   template class PoissonProblem<2>;
   template class PoissonProblem<3>;
-  template void initialize_function(FunctionParser<2>&, const std::string&, const std::string&);
-  template void initialize_function(FunctionParser<3>&, const std::string&, const std::string&);
 } // namespace fvfsi

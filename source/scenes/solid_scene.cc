@@ -1,9 +1,8 @@
 #include <deal.II/base/utilities.h>
 
-#include <fvfsi/apps/poisson.h> // initialize_function
-#include <fvfsi/apps/solid_scene.h>
-#include <fvfsi/io/vtu_output.h>
+#include <fvfsi/base/parsed_function.h>
 #include <fvfsi/mesh/mesh_builder.h>
+#include <fvfsi/scenes/solid_scene.h>
 
 #include <cmath>
 #include <fstream>
@@ -39,7 +38,8 @@ namespace fvfsi
 
   template <int dim>
   SolidScene<dim>::SolidScene(const MeshParameters& mesh_parameters, const SolidParameters& solid_parameters,
-                              const SolidSceneParameters& scene_parameters, MPI_Comm comm,
+                              const SolidSceneParameters& scene_parameters,
+                              const TimeParameters& time, MPI_Comm comm,
                               const std::string& prm_directory, const std::string& output_directory)
     : comm(comm)
     , mesh_parameters(mesh_parameters)
@@ -48,6 +48,7 @@ namespace fvfsi
     , prm_directory(prm_directory)
     , output_directory(output_directory)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+    , clock(time)
     , triangulation(comm)
     , probes(scene_parameters.probes, "Solid scene/Probes")
   {
@@ -58,8 +59,19 @@ namespace fvfsi
   {
     make_mesh(mesh_parameters, triangulation, prm_directory);
     fv = std::make_unique<FVGeometry<dim>>(triangulation);
-    solid = std::make_unique<SolidSolver<dim>>(*fv, mesh_parameters, solid_parameters);
+    solid = std::make_unique<SolidSolver<dim>>(*fv, mesh_parameters, solid_parameters, clock);
     probes.locate(*fv);
+    vtu_output = std::make_unique<VtuOutput<dim>>(*fv, output_directory, "solid");
+    // The history: t, probe displacements, patch forces.
+    std::vector<std::string> columns = {"t"};
+    const char* axis[] = {"x", "y", "z"};
+    for (unsigned int i = 0; i < probes.size(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        columns.push_back(std::string("u") + axis[d] + "_" + probes.name(i));
+    for (const auto& patch : scene_parameters.force_patches)
+      for (unsigned int d = 0; d < dim; ++d)
+        columns.push_back(std::string("F") + axis[d] + "_" + patch);
+    history = std::make_unique<HistoryFile>(output_directory + "/solid_history.txt", columns, comm);
   }
 
   template <int dim>
@@ -74,39 +86,19 @@ namespace fvfsi
   template <int dim>
   void SolidScene<dim>::record_time_history()
   {
-    // One line per time step: t, outer iterations, probe displacements, patch forces.
-    std::ostringstream line;
-    line << std::setprecision(10) << solid->time();
+    // One line per time step (collective: probes and forces are MPI reductions).
+    std::vector<double> line = {clock.time()};
     for (unsigned int i = 0; i < probes.size(); ++i)
     {
       const Tensor<1, dim> u = probe_displacement(i);
-      for (unsigned int d = 0; d < dim; ++d)
-        line << ' ' << u[d];
+      line.insert(line.end(), &u[0], &u[0] + dim);
     }
     for (const auto& patch : scene_parameters.force_patches)
     {
       const Tensor<1, dim> F = solid->patch_force(mesh_parameters.patch_id(patch));
-      for (unsigned int d = 0; d < dim; ++d)
-        line << ' ' << F[d];
+      line.insert(line.end(), &F[0], &F[0] + dim);
     }
-    if (Utilities::MPI::this_mpi_process(comm) != 0)
-      return;
-    const bool first = history_file.empty();
-    history_file = output_directory + "/solid_history.txt";
-    std::ofstream out(history_file, first ? std::ios::trunc : std::ios::app);
-    if (first)
-    {
-      out << "# t";
-      const char* axis[] = {"x", "y", "z"};
-      for (unsigned int i = 0; i < probes.size(); ++i)
-        for (unsigned int d = 0; d < dim; ++d)
-          out << " u" << axis[d] << "_" << probes.name(i);
-      for (const auto& patch : scene_parameters.force_patches)
-        for (unsigned int d = 0; d < dim; ++d)
-          out << " F" << axis[d] << "_" << patch;
-      out << "\n";
-    }
-    out << line.str() << "\n";
+    history->write_line(line);
   }
 
   template <int dim>
@@ -158,31 +150,9 @@ namespace fvfsi
   template <int dim>
   void SolidScene<dim>::output_results() const
   {
-    // Displacement, Cauchy stress components and von Mises stress as cell data.
-    std::vector<CellVector> fields(dim + dim * dim + 1, fv->make_cell_vector());
-    for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
-    {
-      const Tensor<2, dim> s = solid->cell_stress(c);
-      for (unsigned int d = 0; d < dim; ++d)
-        fields[d].local_element(c) = solid->displacement()[c][d];
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          fields[dim + dim * i + j].local_element(c) = s[i][j];
-      const Tensor<2, dim> dev = s - trace(s) / 3.0 * unit_symmetric_tensor<dim>();
-      // 2D: the out-of-plane stress is not stored, so this is the in-plane von Mises measure.
-      fields.back().local_element(c) = std::sqrt(1.5 * scalar_product(dev, dev));
-    }
-    std::vector<std::pair<std::string, const CellVector*>> named;
-    const char* axis[] = {"x", "y", "z"};
-    for (unsigned int d = 0; d < dim; ++d)
-      named.emplace_back(std::string("u_") + axis[d], &fields[d]);
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        named.emplace_back(std::string("sigma_") + axis[i] + axis[j], &fields[dim + dim * i + j]);
-    named.emplace_back("von_Mises", &fields.back());
-    for (auto& f : fields)
-      f.update_ghost_values();
-    VtuOutput<dim>(*fv, output_directory, "solid").write(named, solid->step(), solid->time());
+    OutputFields<dim> fields(*fv);
+    solid->add_output_fields(fields);
+    vtu_output->write(fields, clock.step(), clock.time());
   }
 
   template <int dim>
@@ -190,20 +160,20 @@ namespace fvfsi
   {
     make_grid();
     pcout << "fvfsi: solid " << dim << "D, " << fv->n_global_cells() << " cells, "
-          << solid_parameters.model << ", variant " << solid_parameters.variant << "\n";
-    const unsigned int n_steps =
-      solid_parameters.transient
-        ? static_cast<unsigned int>(std::round(solid_parameters.end_time / solid_parameters.time_step))
-        : 1;
+          << selection_name(SolidParameters::model_names, solid_parameters.model) << ", variant "
+          << selection_name(SolidParameters::variant_names, solid_parameters.variant) << "\n";
+    // Steady: one solve (at t = dt, for loads that depend on t).
+    const unsigned int n_steps = solid_parameters.transient ? clock.n_steps() : 1;
     for (unsigned int step = 1; step <= n_steps; ++step)
     {
+      clock.advance();
       const unsigned int iterations = solid->solve_time_step();
       result.total_outer_iterations += iterations;
       result.n_time_steps = step;
       record_time_history();
       if (solid_parameters.transient && (step % 10 == 0 || step == n_steps))
-        pcout << "fvfsi: solid step " << step << "/" << n_steps << ", t = " << solid->time() << " s, "
-              << iterations << " outer iterations\n";
+        pcout << "fvfsi: solid step " << step << "/" << n_steps << ", t = " << clock.time()
+              << " s, " << iterations << " outer iterations\n";
       if (scene_parameters.output_interval > 0 && step % scene_parameters.output_interval == 0)
         output_results();
     }

@@ -8,12 +8,15 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/distributed/tria.h>
 
+#include <fvfsi/ale/mesh_motion.h>
+#include <fvfsi/base/time_control.h>
 #include <fvfsi/fluid/fluid_parameters.h>
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/fv/point_probes.h>
+#include <fvfsi/io/history_file.h>
 #include <fvfsi/io/summary.h>
+#include <fvfsi/io/vtu_output.h>
 #include <fvfsi/mesh/fv_geometry.h>
-#include <fvfsi/mesh/mesh_motion.h>
 #include <fvfsi/mesh/mesh_parameters.h>
 
 #include <memory>
@@ -44,10 +47,12 @@ namespace fvfsi
   };
 
   /// Mean = (max + min) / 2, amplitude = (max - min) / 2 and frequency (from the mean
-  /// up-crossings) of a sampled periodic signal, as Turek and Hron define them.
+  /// up-crossings) of a sampled periodic signal, as Turek and Hron define them. With fewer than
+  /// two up-crossings the samples hold no full period: all three are NaN (null in summary.json).
   struct PeriodicStatistics
   {
     double mean = 0, amplitude = 0, frequency = 0;
+    unsigned int n_periods = 0; ///< full periods between the first and last up-crossing
   };
   PeriodicStatistics periodic_statistics(const std::vector<double>& t, const std::vector<double>& q);
 
@@ -66,14 +71,15 @@ namespace fvfsi
   {
   public:
     FluidScene(const MeshParameters& mesh_parameters, const FluidParameters& fluid_parameters,
-               const FluidSceneParameters& scene_parameters, MPI_Comm comm,
-               const std::string& prm_directory, const std::string& output_directory);
+               const FluidSceneParameters& scene_parameters, const TimeParameters& time,
+               MPI_Comm comm, const std::string& prm_directory, const std::string& output_directory);
 
     void run();
     void write_summary(Summary& summary) const;
     const FVGeometry<dim>& geometry() const { return *fv; }
     const FluidSolver<dim>& solver() const { return *fluid; }
     const FluidResults& results() const { return result; }
+    const TimeControl& time() const { return clock; }
     /// Force of the fluid on the force patches [N] (per unit depth in 2D).
     dealii::Tensor<1, dim> body_force() const;
     /// The probes of `Fluid scene/Probes`, and the velocity [m/s] and pressure [Pa] at probe i
@@ -83,7 +89,8 @@ namespace fvfsi
 
   private:
     void make_grid();
-    /// Moves the mesh to its position at the coming time step: vertices (also those of the
+    void run_transient();
+    /// Moves the mesh to its position at the clock's time: vertices (also those of the
     /// triangulation, so that the VTU output shows the moved mesh), geometry, mesh fluxes.
     void move_mesh();
     void record_time_history();
@@ -96,12 +103,15 @@ namespace fvfsi
     FluidSceneParameters scene_parameters;
     std::string prm_directory, output_directory;
     dealii::ConditionalOStream pcout;
+    TimeControl clock;
     dealii::parallel::distributed::Triangulation<dim> triangulation;
     std::unique_ptr<FVGeometry<dim>> fv;
     std::unique_ptr<FluidSolver<dim>> fluid;
     std::unique_ptr<FVGeometry<dim>> reference_fv; ///< the undeformed mesh (moving meshes only)
     std::unique_ptr<MeshMotion<dim>> motion;
     PointProbes<dim> probes;
+    std::unique_ptr<VtuOutput<dim>> vtu_output;
+    std::unique_ptr<HistoryFile> history;
 
     std::vector<double> history_t, history_drag, history_lift;
     std::vector<std::pair<dealii::Tensor<1, dim>, double>> final_probe_values;

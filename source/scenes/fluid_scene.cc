@@ -1,10 +1,9 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/utilities.h>
 
-#include <fvfsi/apps/fluid_scene.h>
-#include <fvfsi/apps/poisson.h> // initialize_function
-#include <fvfsi/io/vtu_output.h>
+#include <fvfsi/base/parsed_function.h>
 #include <fvfsi/mesh/mesh_builder.h>
+#include <fvfsi/scenes/fluid_scene.h>
 
 #include <algorithm>
 #include <cmath>
@@ -59,15 +58,21 @@ namespace fvfsi
     for (unsigned int i = 1; i < q.size(); ++i)
       if (q[i - 1] < s.mean && q[i] >= s.mean)
         crossings.push_back(t[i - 1] + (t[i] - t[i - 1]) * (s.mean - q[i - 1]) / (q[i] - q[i - 1]));
-    if (crossings.size() >= 2)
-      s.frequency = (crossings.size() - 1) / (crossings.back() - crossings.front());
+    if (crossings.size() < 2)
+    {
+      s.mean = s.amplitude = s.frequency = std::numeric_limits<double>::quiet_NaN();
+      return s;
+    }
+    s.n_periods = crossings.size() - 1;
+    s.frequency = (crossings.size() - 1) / (crossings.back() - crossings.front());
     return s;
   }
 
   template <int dim>
   FluidScene<dim>::FluidScene(const MeshParameters& mesh_parameters,
                               const FluidParameters& fluid_parameters,
-                              const FluidSceneParameters& scene_parameters, MPI_Comm comm,
+                              const FluidSceneParameters& scene_parameters,
+                              const TimeParameters& time, MPI_Comm comm,
                               const std::string& prm_directory, const std::string& output_directory)
     : comm(comm)
     , mesh_parameters(mesh_parameters)
@@ -76,6 +81,7 @@ namespace fvfsi
     , prm_directory(prm_directory)
     , output_directory(output_directory)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+    , clock(time)
     , triangulation(comm)
     , probes(scene_parameters.probes, "Fluid scene/Probes")
   {
@@ -86,53 +92,44 @@ namespace fvfsi
   {
     make_mesh(mesh_parameters, triangulation, prm_directory);
     fv = std::make_unique<FVGeometry<dim>>(triangulation);
-    fluid = std::make_unique<FluidSolver<dim>>(*fv, mesh_parameters, fluid_parameters);
+    fluid = std::make_unique<FluidSolver<dim>>(*fv, mesh_parameters, fluid_parameters, clock);
     probes.locate(*fv);
     if (scene_parameters.mesh_motion.moves())
     {
       if (!fluid_parameters.transient)
-        throw std::runtime_error("Mesh motion/Type = " + scene_parameters.mesh_motion.type +
+        throw std::runtime_error("Mesh motion/Type = " +
+                                 selection_name(MeshMotionParameters::type_names,
+                                                scene_parameters.mesh_motion.type) +
                                  " needs a transient flow (Fluid/Transient = true)");
       reference_fv = std::make_unique<FVGeometry<dim>>(triangulation);
       motion = std::make_unique<MeshMotion<dim>>(*reference_fv, mesh_parameters,
-                                                 scene_parameters.mesh_motion);
+                                                 scene_parameters.mesh_motion, clock);
     }
+    vtu_output = std::make_unique<VtuOutput<dim>>(*fv, output_directory, "fluid");
+    // The history: t, forces, diagnostics, then u and p at every probe.
+    std::vector<std::string> columns = {"t", "drag", "lift", "courant", "continuity_error"};
+    const char* axis[] = {"x", "y", "z"};
+    for (unsigned int i = 0; i < probes.size(); ++i)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        columns.push_back(std::string("u") + axis[d] + "_" + probes.name(i));
+      columns.push_back("p_" + probes.name(i));
+    }
+    history = std::make_unique<HistoryFile>(output_directory + "/fluid_history.txt", columns, comm);
   }
 
   template <int dim>
   void FluidScene<dim>::move_mesh()
   {
-    const std::vector<Point<dim>> x = motion->vertex_positions(fluid->time() + fluid_parameters.time_step);
-    const std::vector<double> swept = fv->swept_volumes(x);
+    const std::vector<Point<dim>> x = motion->vertex_positions();
+    const std::vector<double> swept = fv->swept_volumes(fv->vertices(), x);
     fv->reinit(x);
     for (const auto& cell : triangulation.active_cell_iterators())
       if (!cell->is_artificial())
         for (const unsigned int v : cell->vertex_indices())
           cell->vertex(v) = x[cell->vertex_index(v)];
-    // Mesh quality: the smallest V_P / V_P(reference); <= 0 is an inverted cell.
-    double min_ratio = std::numeric_limits<double>::max();
-    Point<dim> worst;
-    for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
-      if (fv->cell_volume[c] / reference_fv->cell_volume[c] < min_ratio)
-      {
-        min_ratio = fv->cell_volume[c] / reference_fv->cell_volume[c];
-        worst = reference_fv->centroid[c];
-      }
-    const auto stats = Utilities::MPI::min_max_avg(min_ratio, comm);
-    min_ratio = stats.min;
-    worst = Utilities::MPI::broadcast(comm, worst, stats.min_index);
-    result.min_volume_ratio = std::min(result.min_volume_ratio, min_ratio);
-    if (!(min_ratio > 0))
-    {
-      std::ostringstream where;
-      where << worst;
-      throw std::runtime_error("Mesh motion: a cell is inverted (volume <= 0) at t = " +
-                               Utilities::to_string(fluid->time() + fluid_parameters.time_step) +
-                               " s, the cell with reference centroid (" + where.str() +
-                               ") m; the displacement is too large for this mesh (try another Mesh "
-                               "motion/Diffusivity, see doc/results/mesh_motion.md, or a finer "
-                               "mesh near the moving patches)");
-    }
+    result.min_volume_ratio =
+      std::min(result.min_volume_ratio, min_volume_ratio(*fv, *reference_fv, clock.time()));
     fluid->move_mesh(swept);
     probes.locate(*fv);
   }
@@ -169,38 +166,20 @@ namespace fvfsi
   {
     // One line per time step (collective: forces and diagnostics are MPI reductions).
     const Tensor<1, dim> force = body_force();
-    const double courant = fluid->courant_number(), continuity = fluid->continuity_error();
     final_probe_values.clear();
     for (unsigned int i = 0; i < probes.size(); ++i)
       final_probe_values.push_back(probe_values(i));
-    history_t.push_back(fluid->time());
+    history_t.push_back(clock.time());
     history_drag.push_back(force[0]);
     history_lift.push_back(force[1]);
-    if (Utilities::MPI::this_mpi_process(comm) != 0)
-      return;
-    std::ofstream out(output_directory + "/fluid_history.txt",
-                      history_t.size() == 1 ? std::ios::trunc : std::ios::app);
-    if (history_t.size() == 1)
-    {
-      out << "# t drag lift courant continuity_error";
-      const char* axis[] = {"x", "y", "z"};
-      for (unsigned int i = 0; i < probes.size(); ++i)
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          out << " u" << axis[d] << "_" << probes.name(i);
-        out << " p_" << probes.name(i);
-      }
-      out << "\n";
-    }
-    out << std::setprecision(10) << fluid->time() << ' ' << force[0] << ' ' << force[1] << ' '
-        << courant << ' ' << continuity;
+    std::vector<double> line = {clock.time(), force[0], force[1], fluid->courant_number(),
+                                fluid->continuity_error()};
     for (const auto& [u, p] : final_probe_values)
     {
-      for (unsigned int d = 0; d < dim; ++d)
-        out << ' ' << u[d];
-      out << ' ' << p;
+      line.insert(line.end(), &u[0], &u[0] + dim);
+      line.push_back(p);
     }
-    out << "\n";
+    history->write_line(line);
   }
 
   template <int dim>
@@ -210,7 +189,7 @@ namespace fvfsi
     {
       FunctionParser<dim> exact(dim);
       initialize_function(exact, scene_parameters.exact_velocity, "Fluid scene/Exact velocity");
-      exact.set_time(fluid->time());
+      exact.set_time(clock.time());
       double error = 0, l2 = 0;
       for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
         for (unsigned int j = 0; j < dim; ++j)
@@ -226,7 +205,7 @@ namespace fvfsi
     {
       FunctionParser<dim> exact(1);
       initialize_function(exact, scene_parameters.exact_pressure, "Fluid scene/Exact pressure");
-      exact.set_time(fluid->time());
+      exact.set_time(clock.time());
       // Without an outlet the pressure is known up to a constant: compare p - mean(p).
       const double rho = fluid_parameters.rho;
       double offset = 0, volume = 0;
@@ -256,35 +235,9 @@ namespace fvfsi
   template <int dim>
   void FluidScene<dim>::output_results() const
   {
-    // Velocity, pressure [Pa] and vorticity (2D: the scalar dv/dx - du/dy; 3D: its magnitude).
-    std::vector<CellVector> fields(dim + 2, fv->make_cell_vector());
-    for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
-    {
-      for (unsigned int d = 0; d < dim; ++d)
-        fields[d].local_element(c) = fluid->velocity()[c][d];
-      fields[dim].local_element(c) =
-        fluid_parameters.rho * fluid->kinematic_pressure().local_element(c);
-      Tensor<2, dim> G; // G[i][j] = d u_j / d x_i
-      for (unsigned int j = 0; j < dim; ++j)
-        for (unsigned int i = 0; i < dim; ++i)
-          G[i][j] = fluid->velocity_gradient(j)[c][i];
-      if constexpr (dim == 2)
-        fields[dim + 1].local_element(c) = G[0][1] - G[1][0];
-      else
-      {
-        const Tensor<1, 3> w({G[1][2] - G[2][1], G[2][0] - G[0][2], G[0][1] - G[1][0]});
-        fields[dim + 1].local_element(c) = w.norm();
-      }
-    }
-    for (auto& f : fields)
-      f.update_ghost_values();
-    const char* axis[] = {"x", "y", "z"};
-    std::vector<std::pair<std::string, const CellVector*>> named;
-    for (unsigned int d = 0; d < dim; ++d)
-      named.emplace_back(std::string("u_") + axis[d], &fields[d]);
-    named.emplace_back("p", &fields[dim]);
-    named.emplace_back("vorticity", &fields[dim + 1]);
-    VtuOutput<dim>(*fv, output_directory, "fluid").write(named, fluid->step(), fluid->time());
+    OutputFields<dim> fields(*fv);
+    fluid->add_output_fields(fields);
+    vtu_output->write(fields, clock.step(), clock.time());
   }
 
   template <int dim>
@@ -293,50 +246,53 @@ namespace fvfsi
     make_grid();
     pcout << "fvfsi: fluid " << dim << "D, " << fv->n_global_cells() << " cells, "
           << (fluid_parameters.transient ? "transient (PISO, BDF2)" : "steady (pseudo-transient)")
-          << ", convection " << fluid_parameters.convection
-          << (motion ? ", moving mesh (" + scene_parameters.mesh_motion.type + ")" : std::string())
-          << "\n";
+          << (motion ? ", moving mesh" : "") << "\n";
     if (!fluid_parameters.transient)
     {
+      fluid->begin_time_step();
       result.n_time_steps = fluid->solve_steady();
       record_time_history();
       pcout << "fvfsi: fluid steady solution after " << result.n_time_steps << " pseudo time steps\n";
+      output_results();
     }
     else
-    {
-      const unsigned int total = static_cast<unsigned int>(
-        std::round(fluid_parameters.end_time / fluid_parameters.time_step));
-      for (unsigned int step = 1; step <= total; ++step)
-      {
-        try
-        {
-          if (motion)
-            move_mesh();
-          fluid->solve_time_step();
-        }
-        catch (...)
-        {
-          pcout << "fvfsi: fluid run stopped at time step " << step << "; the last written "
-                << "output (VTU, fluid_history.txt) holds the last good state\n";
-          throw;
-        }
-        result.n_time_steps = step;
-        record_time_history();
-        if (step % scene_parameters.progress_interval == 0 || step == total)
-          pcout << "fvfsi: fluid step " << step << "/" << total << ", t = " << fluid->time()
-                << " s, Courant " << fluid->courant_number() << ", drag " << history_drag.back()
-                << ", lift " << history_lift.back()
-                << (motion ? ", min V/V_ref " + std::to_string(result.min_volume_ratio)
-                           : std::string())
-                << "\n";
-        if (scene_parameters.output_interval > 0 && step % scene_parameters.output_interval == 0)
-          output_results();
-      }
-    }
-    if (scene_parameters.output_interval == 0 || !fluid_parameters.transient)
-      output_results();
+      run_transient();
     compute_errors();
     fluid->timer().print_summary();
+  }
+
+  template <int dim>
+  void FluidScene<dim>::run_transient()
+  {
+    const unsigned int total = clock.n_steps();
+    for (unsigned int step = 1; step <= total; ++step)
+    {
+      try
+      {
+        clock.advance();
+        if (motion)
+          move_mesh();
+        fluid->solve_time_step();
+      }
+      catch (...)
+      {
+        pcout << "fvfsi: fluid run stopped at time step " << step << "; the last written "
+              << "output (VTU, fluid_history.txt) holds the last good state\n";
+        throw;
+      }
+      result.n_time_steps = step;
+      record_time_history();
+      if (step % scene_parameters.progress_interval == 0 || step == total)
+        pcout << "fvfsi: fluid step " << step << "/" << total << ", t = " << clock.time()
+              << " s, Courant " << fluid->courant_number() << ", drag " << history_drag.back()
+              << ", lift " << history_lift.back()
+              << (motion ? ", min V/V_ref " + std::to_string(result.min_volume_ratio) : std::string())
+              << "\n";
+      if (scene_parameters.output_interval > 0 && step % scene_parameters.output_interval == 0)
+        output_results();
+    }
+    if (scene_parameters.output_interval == 0)
+      output_results();
   }
 
   template <int dim>
@@ -373,7 +329,7 @@ namespace fvfsi
     {
       std::vector<double> t, drag, lift;
       for (unsigned int i = 0; i < history_t.size(); ++i)
-        if (history_t[i] >= fluid->time() - scene_parameters.analysis_window - 1e-12)
+        if (history_t[i] >= clock.time() - scene_parameters.analysis_window - 1e-12)
         {
           t.push_back(history_t[i]);
           drag.push_back(history_drag[i]);
@@ -382,6 +338,10 @@ namespace fvfsi
       const auto d = periodic_statistics(t, drag), l = periodic_statistics(t, lift);
       summary.set_result("drag_mean_amplitude_frequency", {d.mean, d.amplitude, d.frequency});
       summary.set_result("lift_mean_amplitude_frequency", {l.mean, l.amplitude, l.frequency});
+      if (d.n_periods == 0 || l.n_periods == 0)
+        summary.set_text_result("periodic_statistics_note",
+                           "null: the last " + Utilities::to_string(scene_parameters.analysis_window) +
+                             " s (Fluid scene/Analysis window) hold no full period of drag or lift");
     }
   }
 

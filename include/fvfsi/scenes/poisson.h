@@ -1,7 +1,7 @@
 #pragma once
 // The Poisson scene: -div(Gamma grad phi) = s on a distributed mesh, with a manufactured exact
 // solution, solved by the FV Laplacian with deferred non-orthogonal correction. It verifies the FV
-// core (geometry, vertex reconstruction, gradients, Laplacian) and is fvfsi's default scene.
+// core (geometry, vertex reconstruction, gradients, Laplacian): prm/poisson_2d.prm, poisson_3d.prm.
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function_parser.h>
@@ -13,9 +13,10 @@
 #include <fvfsi/fv/gradients.h>
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/linear_solver.h>
-#include <fvfsi/fv/quadratic_reconstruction.h>
+#include <fvfsi/fv/quadratic_fit.h>
 #include <fvfsi/fv/vertex_interpolation.h>
 #include <fvfsi/io/summary.h>
+#include <fvfsi/io/vtu_output.h>
 #include <fvfsi/mesh/fv_geometry.h>
 #include <fvfsi/mesh/mesh_parameters.h>
 
@@ -33,9 +34,13 @@ namespace fvfsi
     std::string exact_gradient = "exp(x)*sin(pi*y); pi*exp(x)*cos(pi*y)";
     std::string source = "(pi^2 - 1)*exp(x)*sin(pi*y)"; ///< s = -div(Gamma grad phi)
     std::vector<std::string> neumann_patches = {"right"};
-    /// The Laplacian's face normal gradient: "linear" (Eq. 19 with vertex Gauss-Green gradients)
-    /// or "quadratic" (with the gradient and Hessian of a quadratic least-squares reconstruction).
-    std::string face_gradient = "linear";
+    /// The Laplacian's face normal gradient.
+    enum class FaceGradient
+    {
+      linear,   ///< Eq. 19 with vertex Gauss-Green gradients: exact for linear fields
+      quadratic ///< with the gradient and Hessian of a quadratic fit: exact for quadratics
+    };
+    FaceGradient face_gradient = FaceGradient::linear;
     unsigned int max_correction_iterations = 100;
     double correction_tolerance = 1e-10;
     LinearSolverParameters solver;
@@ -81,12 +86,10 @@ namespace fvfsi
     void setup_system();
     void assemble_system();
     void solve();
-    /// The explicit part of the Laplacian with the current grad (and hessian), added to rhs.
-    void add_correction(CellVector& rhs) const;
-    /// grad (and hessian) from the current phi: vertex Gauss-Green or quadratic reconstruction.
+    /// grad (and hessian) from the current phi: vertex Gauss-Green or quadratic fit.
     void update_gradients();
-    /// n_f . (grad phi)_f of the Laplacian's face normal gradient.
-    double normal_gradient(unsigned int f) const;
+    /// The Hessian of the quadratic face gradient, or none (Eq. 19).
+    const CellHessian<dim>* hessian_or_null() const { return quadratic_fit ? &hessian : nullptr; }
     void compute_errors();
 
     MPI_Comm comm;
@@ -98,7 +101,8 @@ namespace fvfsi
     dealii::parallel::distributed::Triangulation<dim> triangulation;
     std::unique_ptr<FVGeometry<dim>> fv;
     std::unique_ptr<VertexInterpolation<dim>> vertex_interpolation;
-    std::unique_ptr<QuadraticReconstruction<dim>> quadratic_reconstruction; ///< quadratic only
+    std::unique_ptr<GaussGreenGradient<dim>> gauss_green;
+    std::unique_ptr<QuadraticFit<dim>> quadratic_fit; ///< FaceGradient::quadratic only
     std::unique_ptr<Laplacian<dim>> laplacian;
     dealii::FunctionParser<dim> exact, exact_gradient, source;
 
@@ -112,8 +116,4 @@ namespace fvfsi
     PoissonResults result;
   };
 
-  /// Parse a FunctionParser expression of x, y[, z], t; errors name the parameter.
-  template <int dim>
-  void initialize_function(dealii::FunctionParser<dim>& f, const std::string& expression,
-                           const std::string& parameter_name);
 } // namespace fvfsi

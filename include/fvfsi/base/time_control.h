@@ -1,0 +1,65 @@
+#pragma once
+// The one clock of a scene: time t, time step dt, step number, end time, and the coefficients of
+// the backward-difference time derivative (paper Eqs 17-18). The scene owns it and advances it;
+// the fluid, the solid, the mesh motion and the coupling loop read it.
+//
+//   du/dt (t^(n+1)) ~ c0 u^(n+1) - c1 u^n + c2 u^(n-1)
+//
+// The first step is backward Euler (c0 = c1 = 1/dt, c2 = 0), every later one BDF2; with steps of
+// different size (dt = t^(n+1) - t^n, dt_o = t^n - t^(n-1), omega = dt / dt_o)
+//   c0 = (1 + 2 omega) / ((1 + omega) dt),  c1 = (1 + omega) / dt,  c2 = omega^2 / ((1 + omega) dt),
+// which for equal steps are 3/(2 dt), 2/dt, 1/(2 dt). Always c1 = c0 + c2 (a constant has zero
+// derivative), which the discrete space conservation law of the moving fluid mesh relies on.
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace fvfsi
+{
+  /// `subsection Time` of a .prm file.
+  struct TimeParameters
+  {
+    double time_step = 1e-3; ///< dt [s]
+    double end_time = 1;     ///< [s]
+    void declare(dealii::ParameterHandler& prm);
+  };
+
+  /// du/dt ~ c0 u^(n+1) - c1 u^n + c2 u^(n-1) [1/s].
+  struct BdfCoefficients
+  {
+    double c0 = 0, c1 = 0, c2 = 0;
+  };
+
+  class TimeControl
+  {
+  public:
+    explicit TimeControl(const TimeParameters& parameters);
+    TimeControl(double time_step, double end_time);
+
+    /// Move to the next time level: step + 1, t += dt. The solvers then solve for t.
+    void advance();
+    /// Take `dt` from the next advance() on [s].
+    void set_time_step(double dt) { next_dt = dt; }
+
+    double time() const { return t; }                 ///< t^(n+1) of the step being solved [s]
+    double previous_time() const { return t - dt; }   ///< t^n [s]
+    double time_step() const { return dt; }           ///< dt of the step being solved [s]
+    unsigned int step() const { return step_number; } ///< 0 before the first advance()
+    double end_time() const { return end; }
+    /// Steps from 0 to the end time with the initial dt.
+    unsigned int n_steps() const;
+    /// True once t has reached the end time (to a millionth of a step).
+    bool at_end() const { return t >= end - 1e-6 * dt; }
+
+    /// Backward Euler on the first step, BDF2 (variable-step) after.
+    BdfCoefficients bdf() const;
+
+    /// "time step N (t = T s)", for messages.
+    std::string step_name() const;
+
+  private:
+    double t = 0, dt, dt_old = 0, next_dt, end;
+    unsigned int step_number = 0;
+  };
+} // namespace fvfsi

@@ -1,0 +1,95 @@
+#pragma once
+// The multi-secant least-squares model behind the interface quasi-Newton coupling (IQN-ILS,
+// Degroote et al., the paper's ref [43]) and the solid's Anderson acceleration: one model, two
+// users. From the differences between iterations of a residual, dR_k, and of the values that
+// produced it, dX_k (the columns, newest first), it returns for a residual r
+//
+//   correction = sum_k c_k dX_k,   c = argmin | r + sum_k c_k dR_k |_2,
+//
+// the least-squares inverse Jacobian applied to -r. IQN-ILS adds it to the solid's answer d~,
+// Anderson to the fixed-point image G(x).
+//
+// The least-squares problem is solved by deal.II's ImplicitQR on the columns themselves (any
+// vector type with dot products: the interface's replicated dealii::Vector, or the solid's
+// distributed vectors, whose dots are MPI sums). Columns are taken newest first, and one whose
+// part orthogonal to the newer ones is at most `filter` times its norm is left out (the QR filter
+// of IQN methods: after a few iterations of a converging step old columns become nearly
+// dependent on new ones, and kept, they amplify round-off into the update).
+
+#include <deal.II/lac/qr.h>
+#include <deal.II/lac/vector.h>
+
+#include <deque>
+#include <vector>
+
+namespace fvfsi
+{
+  template <typename VectorType>
+  class LeastSquaresModel
+  {
+  public:
+    /// `filter` as above (0: keep every column that is not exactly dependent).
+    explicit LeastSquaresModel(const double filter = 0)
+      : filter(filter)
+    {
+    }
+
+    /// Add the newest pair of columns; `tag` marks them (e.g. with their time step).
+    void add_column(const VectorType& dR, const VectorType& dX, const unsigned int tag = 0)
+    {
+      columns.push_front({dR, dX, tag});
+    }
+    /// Forget the oldest column pair.
+    void drop_oldest() { columns.pop_back(); }
+    /// Forget the columns tagged below `tag`.
+    void drop_tagged_before(const unsigned int tag)
+    {
+      while (!columns.empty() && columns.back().tag < tag)
+        columns.pop_back();
+    }
+    void clear() { columns.clear(); }
+    unsigned int size() const { return columns.size(); }
+    /// The tag of the oldest column (size() > 0).
+    unsigned int oldest_tag() const { return columns.back().tag; }
+    /// Columns the filter kept in the last call of correction().
+    unsigned int n_used() const { return used; }
+
+    /// `result` (sized like r) = sum_k c_k dX_k with c = argmin |r + sum_k c_k dR_k|; false
+    /// (result untouched) if no column is usable.
+    bool correction(const VectorType& r, VectorType& result) const
+    {
+      dealii::ImplicitQR<VectorType> qr;
+      const double filter2 = filter * filter;
+      qr.connect_append_column_slot(
+        [filter2](const dealii::Vector<double>&, const double& rho2, const double& norm2) {
+          return rho2 > filter2 * norm2 && rho2 > 0;
+        });
+      std::vector<const Columns*> kept;
+      for (const auto& column : columns)
+        if (column.dR.l2_norm() > 0 && qr.append_column(column.dR))
+          kept.push_back(&column);
+      used = kept.size();
+      if (kept.empty())
+        return false;
+      // c = -R^-1 Q^T r with Q^T r = R^-T A^T r (A = [dR_k], R its QR factor).
+      dealii::Vector<double> ATr(used), QTr(used), c(used);
+      qr.multiply_with_AT(ATr, r);
+      qr.solve(QTr, ATr, /*transpose=*/true);
+      qr.solve(c, QTr);
+      result = 0;
+      for (unsigned int k = 0; k < used; ++k)
+        result.add(-c(k), kept[k]->dX);
+      return true;
+    }
+
+  private:
+    struct Columns
+    {
+      VectorType dR, dX;
+      unsigned int tag;
+    };
+    double filter;
+    std::deque<Columns> columns;
+    mutable unsigned int used = 0;
+  };
+} // namespace fvfsi

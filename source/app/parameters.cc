@@ -1,0 +1,99 @@
+#include <deal.II/base/utilities.h>
+
+#include <fvfsi/app/parameters.h>
+#include <fvfsi/base/exceptions.h>
+
+#include <fstream>
+#include <stdexcept>
+
+namespace fvfsi
+{
+  using namespace dealii;
+
+  namespace
+  {
+    void apply_override(ParameterHandler& prm, const std::string& assignment)
+    {
+      const auto eq = assignment.find('=');
+      if (eq == std::string::npos)
+        throw std::runtime_error("--set \"" + assignment + "\": expected \"Section/Key=value\"");
+      std::string path = Utilities::trim(assignment.substr(0, eq));
+      const std::string value = Utilities::trim(assignment.substr(eq + 1));
+      std::vector<std::string> sections;
+      for (auto slash = path.find('/'); slash != std::string::npos; slash = path.find('/'))
+      {
+        sections.push_back(Utilities::trim(path.substr(0, slash)));
+        path = path.substr(slash + 1);
+      }
+      for (const auto& s : sections)
+        prm.enter_subsection(s);
+      try
+      {
+        prm.set(Utilities::trim(path), value);
+      }
+      catch (const std::exception& e)
+      {
+        for (unsigned int i = 0; i < sections.size(); ++i)
+          prm.leave_subsection();
+        throw std::runtime_error("--set \"" + assignment + "\": " + concise_message(e));
+      }
+      for (unsigned int i = 0; i < sections.size(); ++i)
+        prm.leave_subsection();
+    }
+
+  } // namespace
+
+  const SelectionNames<RunParameters::Scene> RunParameters::scene_names = {
+    {"poisson", Scene::poisson}, {"solid", Scene::solid}, {"fluid", Scene::fluid}, {"fsi", Scene::fsi}};
+
+  void RunParameters::declare(ParameterHandler& prm)
+  {
+    prm.add_parameter("Dimension", dim, "Space dimension of the scene: 2 (true 2D) or 3.",
+                      Patterns::Integer(2, 3));
+    add_selection(prm, "Scene", scene, scene_names,
+                  "What to run: poisson (the FV core verification problem), solid (the solid "
+                  "solver alone), fluid (the flow solver alone, on a fixed or moving mesh) or "
+                  "fsi (fluid and solid coupled; the fluid mesh is `Mesh`, the solid's `Solid "
+                  "mesh`).");
+    prm.add_parameter("Output directory", output_directory,
+                      "Directory for VTU/PVTU/PVD files, tables and summary.json (created if needed).");
+  }
+
+  AllParameters::AllParameters()
+  {
+    run.declare(prm);
+    time.declare(prm);
+    mesh.patch_names = {{0, "left"}, {1, "right"}, {2, "bottom"}, {3, "top"}, {4, "back"}, {5, "front"}};
+    mesh.distortion = 0.25;
+    mesh.n_global_refinements = 5;
+    mesh.declare(prm);
+    poisson.declare(prm);
+    solid.declare(prm);
+    solid_scene.declare(prm);
+    fluid.declare(prm);
+    fluid_scene.declare(prm);
+    solid_mesh.declare(prm, "Solid mesh");
+    fsi.declare(prm);
+  }
+
+  void read_parameters(AllParameters& parameters, const std::string& file,
+                       const std::vector<std::string>& overrides)
+  {
+    if (!file.empty())
+    {
+      if (!std::ifstream(file))
+        throw std::runtime_error("cannot open parameter file `" + file + "`");
+      try
+      {
+        parameters.prm.parse_input(file, "", false, false);
+      }
+      catch (const std::exception& e)
+      {
+        throw std::runtime_error("in parameter file `" + file + "`: " + concise_message(e));
+      }
+    }
+    for (const auto& o : overrides)
+      apply_override(parameters.prm, o);
+  }
+
+} // namespace fvfsi

@@ -1,0 +1,64 @@
+#include <fvfsi/base/time_control.h>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace fvfsi
+{
+  void TimeParameters::declare(dealii::ParameterHandler& prm)
+  {
+    prm.enter_subsection("Time");
+    prm.add_parameter("Time step", time_step,
+                      "dt [s] of a transient run: the fluid, the solid, the mesh motion and the "
+                      "coupling share it (a steady solver ignores it; a steady solid takes one step).",
+                      dealii::Patterns::Double(0));
+    prm.add_parameter("End time", end_time, "[s] of a transient run.", dealii::Patterns::Double(0));
+    prm.leave_subsection();
+  }
+
+  TimeControl::TimeControl(const TimeParameters& parameters)
+    : TimeControl(parameters.time_step, parameters.end_time)
+  {
+  }
+
+  TimeControl::TimeControl(const double time_step, const double end_time)
+    : dt(time_step)
+    , next_dt(time_step)
+    , end(end_time)
+  {
+    if (!(time_step > 0))
+      throw std::runtime_error("Time/Time step must be positive (it is " +
+                               std::to_string(time_step) + ")");
+  }
+
+  void TimeControl::advance()
+  {
+    if (step_number > 0)
+      dt_old = dt;
+    dt = next_dt;
+    t += dt;
+    ++step_number;
+  }
+
+  unsigned int TimeControl::n_steps() const
+  {
+    return static_cast<unsigned int>(std::round(end / next_dt));
+  }
+
+  std::string TimeControl::step_name() const
+  {
+    std::ostringstream name;
+    name << "time step " << step_number << " (t = " << t << " s)";
+    return name.str();
+  }
+
+  BdfCoefficients TimeControl::bdf() const
+  {
+    if (step_number <= 1)
+      return {1 / dt, 1 / dt, 0};
+    const double omega = dt / dt_old;
+    return {(1 + 2 * omega) / ((1 + omega) * dt), (1 + omega) / dt,
+            omega * omega / ((1 + omega) * dt)};
+  }
+} // namespace fvfsi
