@@ -70,64 +70,60 @@ namespace fvfsi
         }
       }
     }
-  } // namespace
-
-  int run_application(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
-  {
-    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    try
+  
+    /// What the command line asks for.
+    struct CommandLine
     {
+      bool help = false, print = false;
       std::string file;
       std::vector<std::string> overrides;
-      bool print = false;
+    };
+
+    CommandLine parse_command_line(const std::vector<std::string>& args)
+    {
+      CommandLine c;
       for (unsigned int i = 0; i < args.size(); ++i)
-      {
         if (args[i] == "--help" || args[i] == "-h")
-        {
-          if (root)
-            out << usage;
-          return 0;
-        }
+          c.help = true;
         else if (args[i] == "--print-parameters")
-          print = true;
+          c.print = true;
         else if (args[i] == "--set")
         {
           if (i + 1 == args.size())
             throw std::runtime_error("--set needs an argument \"Section/Key=value\"");
-          overrides.push_back(args[++i]);
+          c.overrides.push_back(args[++i]);
         }
         else if (args[i].rfind("-", 0) == 0)
           throw std::runtime_error("unknown option `" + args[i] + "` (see fvfsi --help)");
-        else if (file.empty())
-          file = args[i];
+        else if (c.file.empty())
+          c.file = args[i];
         else
-          throw std::runtime_error("more than one parameter file given: `" + file + "`, `" + args[i] + "`");
-      }
+          throw std::runtime_error("more than one parameter file given: `" + c.file + "`, `" +
+                                   args[i] + "`");
+      return c;
+    }
 
-      AllParameters parameters;
-      read_parameters(parameters, file, overrides);
-      if (print)
-      {
-        if (root)
-          parameters.prm.print_parameters(out, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
-        return 0;
-      }
-
+    /// Run the scene of `parameters` and write its summary.json; `file` is the .prm file (its
+    /// directory resolves relative mesh file names).
+    void run(const AllParameters& parameters, const std::string& file, std::ostream& out)
+    {
+      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       Timer timer;
       const std::string& dir = parameters.run.output_directory;
       if (root)
         std::filesystem::create_directories(dir);
       MPI_Barrier(MPI_COMM_WORLD);
-      const std::string prm_directory =
-        file.empty() ? "." : std::filesystem::path(file).parent_path().string();
+      std::string prm_directory = std::filesystem::path(file).parent_path().string();
+      if (prm_directory.empty())
+        prm_directory = ".";
       Summary summary;
       summary.set("scene", selection_name(RunParameters::scene_names, parameters.run.scene));
       summary.set("dim", parameters.run.dim);
       summary.set("n_mpi_ranks", Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
       if (parameters.run.dim == 2)
-        run_scene<2>(parameters, prm_directory.empty() ? "." : prm_directory, summary);
+        run_scene<2>(parameters, prm_directory, summary);
       else
-        run_scene<3>(parameters, prm_directory.empty() ? "." : prm_directory, summary);
+        run_scene<3>(parameters, prm_directory, summary);
       summary.set("wall_seconds", Utilities::MPI::max(timer.wall_time(), MPI_COMM_WORLD));
       // Peak resident memory of the largest rank [MB] (VmHWM: libraries included, so memory per
       // cell is the slope between two mesh sizes, not this over n_cells).
@@ -139,6 +135,31 @@ namespace fvfsi
         summary.write(dir + "/summary.json");
         out << "fvfsi: wrote " << dir << "/summary.json\n";
       }
+    }
+  } // namespace
+
+  int run_application(const std::vector<std::string>& args, std::ostream& out, std::ostream& err)
+  {
+    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    try
+    {
+      const CommandLine command = parse_command_line(args);
+      if (command.help)
+      {
+        if (root)
+          out << usage;
+        return 0;
+      }
+      AllParameters parameters;
+      read_parameters(parameters, command.file, command.overrides);
+      if (command.print)
+      {
+        if (root)
+          parameters.prm.print_parameters(out, ParameterHandler::PRM |
+                                                 ParameterHandler::KeepDeclarationOrder);
+        return 0;
+      }
+      run(parameters, command.file, out);
       return 0;
     }
     catch (const std::exception& e)

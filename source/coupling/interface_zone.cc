@@ -24,6 +24,54 @@ namespace fvfsi
     }
   } // namespace
 
+  namespace
+  {
+    /// One face of the interface as every rank sees it.
+    template <int dim>
+    struct GatheredFace
+    {
+      Point<dim> centre;
+      Tensor<1, dim> normal;
+      double area;
+      std::array<Point<dim>, GeometryInfo<dim>::vertices_per_face> vertices;
+    };
+
+    /// The faces for which `on_interface` is true, of all ranks (flattened for all_gather).
+    template <int dim, typename Predicate>
+    std::vector<GatheredFace<dim>> gather_faces(const FVGeometry<dim>& geometry,
+                                                const Predicate& on_interface)
+    {
+      constexpr unsigned int n_points = GeometryInfo<dim>::vertices_per_face;
+      constexpr unsigned int stride = 2 * dim + 1 + n_points * dim;
+      std::vector<double> mine;
+      for (const auto& face : geometry.faces)
+        if (on_interface(face))
+        {
+          mine.insert(mine.end(), &face.centre[0], &face.centre[0] + dim);
+          mine.insert(mine.end(), &face.n[0], &face.n[0] + dim);
+          mine.push_back(face.area);
+          for (const unsigned int v : face.vertices)
+            mine.insert(mine.end(), &geometry.vertices()[v][0], &geometry.vertices()[v][0] + dim);
+        }
+      std::vector<GatheredFace<dim>> faces;
+      for (const auto& part : Utilities::MPI::all_gather(geometry.comm(), mine))
+        for (unsigned int i = 0; i + stride <= part.size(); i += stride)
+        {
+          GatheredFace<dim> face;
+          for (unsigned int d = 0; d < dim; ++d)
+          {
+            face.centre[d] = part[i + d];
+            face.normal[d] = part[i + dim + d];
+            for (unsigned int j = 0; j < n_points; ++j)
+              face.vertices[j][d] = part[i + 2 * dim + 1 + j * dim + d];
+          }
+          face.area = part[i + 2 * dim];
+          faces.push_back(face);
+        }
+      return faces;
+    }
+  } // namespace
+
   template <int dim>
   InterfaceZone<dim>::InterfaceZone(const FVGeometry<dim>& geometry,
                                     const std::vector<unsigned int>& patches, const std::string& name)
@@ -34,78 +82,46 @@ namespace fvfsi
       return face.kind == FaceKind::boundary &&
              std::find(patches.begin(), patches.end(), face.patch) != patches.end();
     };
-    // Each owned face as centre, normal, area and vertex coordinates, flattened for all_gather.
-    constexpr unsigned int stride = 2 * dim + 1 + n_face_points * dim;
-    std::vector<double> mine;
-    for (const auto& face : geometry.faces)
-      if (on_interface(face))
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          mine.push_back(face.centre[d]);
-        for (unsigned int d = 0; d < dim; ++d)
-          mine.push_back(face.n[d]);
-        mine.push_back(face.area);
-        for (const unsigned int v : face.vertices)
-          for (unsigned int d = 0; d < dim; ++d)
-            mine.push_back(geometry.vertices()[v][d]);
-      }
-    std::vector<double> all;
-    for (const auto& part : Utilities::MPI::all_gather(comm, mine))
-      all.insert(all.end(), part.begin(), part.end());
-    const unsigned int n = all.size() / stride;
-    if (n == 0)
+    std::vector<GatheredFace<dim>> faces = gather_faces(geometry, on_interface);
+    if (faces.empty())
       throw std::runtime_error("Interface " + name + ": its patches have no boundary face");
-
-    const auto point_at = [&](const unsigned int i, const unsigned int offset) {
-      Point<dim> x;
-      for (unsigned int d = 0; d < dim; ++d)
-        x[d] = all[i * stride + offset + d];
-      return x;
-    };
     // Faces ordered by their centres, points by their coordinates: independent of the ranks.
-    std::vector<unsigned int> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](const unsigned int a, const unsigned int b) {
-      return key(point_at(a, 0)) < key(point_at(b, 0));
+    std::sort(faces.begin(), faces.end(), [](const auto& a, const auto& b) {
+      return key(a.centre) < key(b.centre);
     });
-    std::map<std::array<double, dim>, unsigned int> point_index;
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = 0; j < n_face_points; ++j)
-        point_index.emplace(key(point_at(i, 2 * dim + 1 + j * dim)), 0);
-    for (auto& [x, index] : point_index)
+    for (const auto& face : faces)
+      for (const auto& x : face.vertices)
+        point_lookup.emplace(key(x), 0);
+    for (auto& [x, index] : point_lookup)
     {
       index = points.size();
-      Point<dim> p;
+      points.push_back(Point<dim>());
       for (unsigned int d = 0; d < dim; ++d)
-        p[d] = x[d];
-      points.push_back(p);
+        points.back()[d] = x[d];
     }
     std::map<std::array<double, dim>, unsigned int> face_index;
-    for (const unsigned int i : order)
+    for (const auto& face : faces)
     {
-      face_index[key(point_at(i, 0))] = face_centre.size();
-      face_centre.push_back(point_at(i, 0));
-      face_normal.push_back(point_at(i, dim));
-      face_area.push_back(all[i * stride + 2 * dim]);
+      face_index[key(face.centre)] = face_centre.size();
+      face_centre.push_back(face.centre);
+      face_normal.push_back(face.normal);
+      face_area.push_back(face.area);
       std::array<unsigned int, n_face_points> corners;
       for (unsigned int j = 0; j < n_face_points; ++j)
-        corners[j] = point_index.at(key(point_at(i, 2 * dim + 1 + j * dim)));
+        corners[j] = point_lookup.at(key(face.vertices[j]));
       face_points.push_back(corners);
     }
 
     // The way back to the local mesh.
     std::map<unsigned int, unsigned int> local_point;
     for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (!on_interface(face))
-        continue;
-      local_face_list.emplace_back(f, face_index.at(key(face.centre)));
-      for (const unsigned int v : face.vertices)
-        local_point[v] = point_index.at(key(geometry.vertices()[v]));
-    }
+      if (on_interface(geometry.faces[f]))
+      {
+        local_face_list.emplace_back(f, face_index.at(key(geometry.faces[f].centre)));
+        for (const unsigned int v : geometry.faces[f].vertices)
+          local_point[v] = point_lookup.at(key(geometry.vertices()[v]));
+      }
     local_point_list.assign(local_point.begin(), local_point.end());
-    point_lookup = std::move(point_index);
   }
 
   template <int dim>

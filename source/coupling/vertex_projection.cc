@@ -82,6 +82,34 @@ namespace fvfsi
       unsigned int face;
       unsigned int first; ///< 3D: the triangle (p_first, p_first+1, centre); 2D: 0
     };
+
+    /// The nearest point of piece p (a segment in 2D, a triangle of the face about its centre c
+    /// in 3D) to x, as weights w of the face's points; returns the distance.
+    template <int dim>
+    double project(const Point<dim>& x, const InterfaceZone<dim>& source, const Point<dim>& c,
+                   const Piece<dim>& p,
+                   std::array<double, InterfaceZone<dim>::n_face_points>& w)
+    {
+      constexpr unsigned int n_face_points = InterfaceZone<dim>::n_face_points;
+      const auto& corners = source.face_points[p.face];
+      w.fill(0);
+      if constexpr (dim == 2)
+        w = nearest_on_segment(x, source.points[corners[0]], source.points[corners[1]]);
+      else
+      {
+        const unsigned int i0 = p.first, i1 = (p.first + 1) % n_face_points;
+        const auto b =
+          nearest_on_triangle(x, source.points[corners[i0]], source.points[corners[i1]], c);
+        for (unsigned int i = 0; i < n_face_points; ++i)
+          w[i] = b[2] / n_face_points; // the centre's value is the mean of the vertex values
+        w[i0] += b[0];
+        w[i1] += b[1];
+      }
+      Point<dim> y;
+      for (unsigned int i = 0; i < n_face_points; ++i)
+        y += w[i] * source.points[corners[i]];
+      return (x - y).norm();
+    }
   } // namespace
 
   template <int dim>
@@ -110,32 +138,6 @@ namespace fvfsi
     }
     const auto tree = pack_rtree_of_indices(boxes);
 
-    // Nearest point of piece p to x, as weights of the face's points; returns the distance.
-    const auto project = [&](const Point<dim>& x, const Piece<dim>& p,
-                             std::array<double, n_face_points>& w) {
-      const auto& corners = source.face_points[p.face];
-      w.fill(0);
-      Point<dim> y;
-      if constexpr (dim == 2)
-      {
-        const auto b = nearest_on_segment(x, source.points[corners[0]], source.points[corners[1]]);
-        w = b;
-      }
-      else
-      {
-        const unsigned int i0 = p.first, i1 = (p.first + 1) % n_face_points;
-        const auto b = nearest_on_triangle(x, source.points[corners[i0]], source.points[corners[i1]],
-                                           centre[p.face]);
-        for (unsigned int i = 0; i < n_face_points; ++i)
-          w[i] = b[2] / n_face_points; // the centre's value is the mean of the vertex values
-        w[i0] += b[0];
-        w[i1] += b[1];
-      }
-      for (unsigned int i = 0; i < n_face_points; ++i)
-        y += w[i] * source.points[corners[i]];
-      return (x - y).norm();
-    };
-
     for (unsigned int i = 0; i < target.n_points(); ++i)
     {
       const Point<dim>& x = target.points[i];
@@ -152,7 +154,7 @@ namespace fvfsi
         {
           farthest_box = std::max(farthest_box, box_distance(boxes[p], x));
           std::array<double, n_face_points> w;
-          const double distance = project(x, pieces[p], w);
+          const double distance = project(x, source, centre[pieces[p].face], pieces[p], w);
           if (distance < best - 1e-14 * (1 + best))
           {
             best = distance;

@@ -20,6 +20,8 @@ namespace fvfsi
     pressure_solver.absolute_tolerance = 1e-15;
   }
 
+  // One entry after the other, each with the documentation that --print-parameters shows: a list
+  // longer than a screen, read as one.
   void FluidParameters::declare(ParameterHandler& prm)
   {
     prm.enter_subsection("Fluid");

@@ -18,31 +18,26 @@ namespace fvfsi
   void FluidSolver<dim>::assemble_momentum()
   {
     TimerOutput::Scope scope(timer_output, "momentum assembly");
-    const auto [c0, c1, c2] = time_coefficients();
-    (void)c0;
     momentum.zero();
     for (unsigned int j = 0; j < dim; ++j)
       B_rest[j] = 0;
-
     for (unsigned int f = 0; f < geometry.faces.size(); ++f)
     {
       const auto& face = geometry.faces[f];
       if (face.kind == FaceKind::ghost_boundary)
         continue;
-      const double phi = F[f] - F_mesh[f];            // flux relative to the moving face
-      const double a_diffusion = prm.nu * face.area / face.d_n; // Eq. 27
-      const unsigned int P = face.P;
+      const double phi = F[f] - F_mesh[f]; // flux relative to the moving face
       // + u_P sum_f F^mesh_f: with the time term's c0_P (see fluid_solver.h) the spatial rows
       // then sum to sum_f F_f. Zero on a fixed mesh.
-      momentum.diagonal[P] += F_mesh[f];
+      momentum.diagonal[face.P] += F_mesh[f];
       if (face.kind == FaceKind::interior)
         momentum.diagonal[face.N] -= F_mesh[f];
       if (face.N != invalid_cell)
       {
-        // Viscous term: orthogonal part of Eq. 19 implicit. Convection: upwind implicit,
-        // phi u_f leaves P and enters N.
-        momentum.add_face_diffusion(f, a_diffusion);
-        momentum.diagonal[P] += std::max(phi, 0.0);
+        // Viscous term: orthogonal part of Eq. 19 implicit (Eq. 27). Convection: upwind
+        // implicit, phi u_f leaves P and enters N.
+        momentum.add_face_diffusion(f, prm.nu * face.area / face.d_n);
+        momentum.diagonal[face.P] += std::max(phi, 0.0);
         momentum.upper[f] += std::min(phi, 0.0);
         if (face.kind == FaceKind::interior)
         {
@@ -50,43 +45,58 @@ namespace fvfsi
           momentum.lower[f] -= std::max(phi, 0.0);
         }
         add_convection_correction(f, phi);
-        continue;
       }
-      const Tensor<1, dim>& u_b = boundary_u[f];
-      switch (face_condition[f].type)
-      {
-        case Type::velocity_inlet:
-        case Type::wall:
-          // u_b given: Eq. 23 for the viscous flux, the convected value is u_b.
-          momentum.diagonal[P] += a_diffusion;
-          for (unsigned int j = 0; j < dim; ++j)
-            B_rest[j].local_element(P) += (a_diffusion - phi) * u_b[j];
-          break;
-        case Type::outlet:
-          // Zero normal gradient: no viscous flux; outflow convects u_P (implicit) corrected to
-          // u_b, backflow convects u_b (explicit).
-          momentum.diagonal[P] += std::max(phi, 0.0);
-          for (unsigned int j = 0; j < dim; ++j)
-            B_rest[j].local_element(P) -=
-              std::min(phi, 0.0) * u_b[j] +
-              (prm.convection == FluidParameters::Convection::upwind
-                 ? 0.0
-                 : std::max(phi, 0.0) * (u_b[j] - u[P][j]));
-          break;
-        case Type::symmetry:
-          // No flux through the plane; the viscous force of the normal velocity, explicit.
-          for (unsigned int j = 0; j < dim; ++j)
-            B_rest[j].local_element(P) += a_diffusion * (u_b[j] - u[P][j]);
-          break;
-      }
+      else
+        add_boundary_face_momentum(f, phi);
     }
     // Explicit non-orthogonal part of Eq. 19 for the viscous term.
     for (unsigned int j = 0; j < dim; ++j)
       laplacian.add_correction(nu_f, velocity_bc, grad_u[j], B_rest[j]);
+    add_time_and_body_force_terms();
+  }
 
+  template <int dim>
+  void FluidSolver<dim>::add_boundary_face_momentum(const unsigned int f, const double phi)
+  {
+    const auto& face = geometry.faces[f];
+    const unsigned int P = face.P;
+    const double a_diffusion = prm.nu * face.area / face.d_n; // Eq. 27
+    const Tensor<1, dim>& u_b = boundary_u[f];
+    switch (face_condition[f].type)
+    {
+      case Type::velocity_inlet:
+      case Type::wall:
+        // u_b given: Eq. 23 for the viscous flux, the convected value is u_b.
+        momentum.diagonal[P] += a_diffusion;
+        for (unsigned int j = 0; j < dim; ++j)
+          B_rest[j].local_element(P) += (a_diffusion - phi) * u_b[j];
+        break;
+      case Type::outlet:
+        // Zero normal gradient: no viscous flux; outflow convects u_P (implicit) corrected to
+        // u_b, backflow convects u_b (explicit).
+        momentum.diagonal[P] += std::max(phi, 0.0);
+        for (unsigned int j = 0; j < dim; ++j)
+          B_rest[j].local_element(P) -=
+            std::min(phi, 0.0) * u_b[j] + (prm.convection == FluidParameters::Convection::upwind
+                                             ? 0.0
+                                             : std::max(phi, 0.0) * (u_b[j] - u[P][j]));
+        break;
+      case Type::symmetry:
+        // No flux through the plane; the viscous force of the normal velocity, explicit.
+        for (unsigned int j = 0; j < dim; ++j)
+          B_rest[j].local_element(P) += a_diffusion * (u_b[j] - u[P][j]);
+        break;
+    }
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::add_time_and_body_force_terms()
+  {
     // Time derivative of V u (backward Euler / BDF2) and body force: c0_P = c1 V^o/V - c2 V^oo/V
     // (= c0 on a fixed mesh). Steady: a local pseudo time step, c0_P = a*_P (1 - alpha) / alpha
-    // from the spatial coefficient a*_P assembled above.
+    // from the spatial coefficient a*_P assembled so far.
+    const auto [c0, c1, c2] = time_coefficients();
+    (void)c0;
     const double alpha = prm.momentum_relaxation;
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
     {
@@ -328,6 +338,8 @@ namespace fvfsi
   // The members above are defined in this file; instantiate them here.
 #define FVFSI_INSTANTIATE(dim)                                                                    \
   template void FluidSolver<dim>::assemble_momentum();                                            \
+  template void FluidSolver<dim>::add_boundary_face_momentum(unsigned int, double);               \
+  template void FluidSolver<dim>::add_time_and_body_force_terms();                                \
   template void FluidSolver<dim>::add_convection_correction(unsigned int, double);               \
   template void FluidSolver<dim>::solve_momentum();                                               \
   template void FluidSolver<dim>::assemble_pressure_matrix();                                     \

@@ -146,11 +146,11 @@ namespace fvfsi
   }
 
   template <int dim>
-  bool QuadraticFit<dim>::fit(const unsigned int P)
+  double QuadraticFit<dim>::offsets(const unsigned int P, std::vector<Tensor<1, dim>>& s) const
   {
-    const unsigned int n = n_data(P), m = n_unknowns;
     // Offsets from r_P (mirror images reflected), and L^2, their mean square over value data.
-    std::vector<Tensor<1, dim>> s(n);
+    const unsigned int n = n_data(P);
+    s.resize(n);
     double L2 = 0;
     unsigned int n_values = 0;
     for (unsigned int j = 0; j < n; ++j)
@@ -165,11 +165,17 @@ namespace fvfsi
         ++n_values;
       }
     }
-    if (n < m || n_values == 0)
-      return false;
-    L2 /= n_values;
-    const double L = std::sqrt(L2);
+    return n_values == 0 ? 0 : L2 / n_values;
+  }
 
+  template <int dim>
+  bool QuadraticFit<dim>::fit(const unsigned int P)
+  {
+    const unsigned int n = n_data(P), m = n_unknowns;
+    std::vector<Tensor<1, dim>> s;
+    const double L2 = offsets(P, s), L = std::sqrt(L2);
+    if (n < m || L2 == 0)
+      return false;
     // Rows in the scaled unknowns (L g, L^2 H); a normal-derivative datum is scaled by L too.
     // B = W^(1/2) A, whose pseudo-inverse times W^(1/2) maps the data to the unknowns.
     LAPACKFullMatrix<double> B(n, m);
@@ -178,8 +184,7 @@ namespace fvfsi
     {
       const Datum& d = data[start[P] + j];
       const Tensor<1, dim> x = s[j] / L;
-      const double q = 1 / x.norm_square();
-      const double p = options.weight_exponent;
+      const double q = 1 / x.norm_square(), p = options.weight_exponent;
       sqrt_w[j] = std::sqrt(p == 2 ? q : p == 6 ? q * q * q : std::pow(q, p / 2));
       if (d.kind == Kind::normal_derivative)
         normal_derivative_row(geometry.faces[d.index].n, x, row);
@@ -193,7 +198,6 @@ namespace fvfsi
     if (!(sigma_min * sigma_min > options.rank_tolerance * sigma_max * sigma_max))
       return false;
     B.compute_inverse_svd();
-
     // Coefficient of datum j: column j of pinv(B) W^(1/2), unscaled (g = (L g) / L, H = (L^2 H) /
     // L^2, a normal derivative datum times L). Value data enter as phi_j - phi_P.
     Vector<double> e(n), x(m);

@@ -179,6 +179,35 @@ namespace fvfsi
   }
 
   template <int dim>
+  void FVGeometry<dim>::set_tangential_weights(FaceGeometry<dim>& face) const
+  {
+    // Eq. 39: (1/S_f) sum_e m_e L_e phi_e with m_e L_e = (p_e1 - p_e0) x n_f and phi_e the edge
+    // average; in 2D the "edges" are the two end points and m_e = -+ t.
+    const auto& x = vertex_positions;
+    constexpr unsigned int nv = FaceGeometry<dim>::max_vertices;
+    for (auto& w : face.tangential_weight)
+      w = Tensor<1, dim>();
+    if constexpr (dim == 2)
+    {
+      const Tensor<1, dim> t = x[face.vertices[1]] - x[face.vertices[0]];
+      face.tangential_weight[0] = -t / t.norm_square();
+      face.tangential_weight[1] = t / t.norm_square();
+    }
+    else
+    {
+      // Edge midpoints of a (possibly non-planar) quad lie on the plane through its vertex average
+      // normal to S_f, so this is exact for linear fields on any hexahedral face.
+      for (unsigned int i = 0; i < nv; ++i)
+      {
+        const unsigned int j = (i + 1) % nv;
+        const Tensor<1, dim> m_L = cross_product_3d(x[face.vertices[j]] - x[face.vertices[i]], face.n);
+        face.tangential_weight[i] += m_L / (2 * face.area);
+        face.tangential_weight[j] += m_L / (2 * face.area);
+      }
+    }
+  }
+
+  template <int dim>
   void FVGeometry<dim>::compute_face_geometry(FaceGeometry<dim>& face) const
   {
     const auto& x = vertex_positions;
@@ -203,28 +232,7 @@ namespace fvfsi
       face.gauss_green_weight[i] =
         dim == 2 ? 0.5 * face.S : face.S / (3.0 * nv) + (pieces.S[i % pieces.n] + pieces.S[(i + nv - 1) % pieces.n]) * third;
 
-    // Eq. 39: (1/S_f) sum_e m_e L_e phi_e with m_e L_e = (p_e1 - p_e0) x n_f and phi_e the edge
-    // average; in 2D the "edges" are the two end points and m_e = -+ t.
-    for (auto& w : face.tangential_weight)
-      w = Tensor<1, dim>();
-    if constexpr (dim == 2)
-    {
-      const Tensor<1, dim> t = x[face.vertices[1]] - x[face.vertices[0]];
-      face.tangential_weight[0] = -t / t.norm_square();
-      face.tangential_weight[1] = t / t.norm_square();
-    }
-    else
-    {
-      // Edge midpoints of a (possibly non-planar) quad lie on the plane through its vertex average
-      // normal to S_f, so this is exact for linear fields on any hexahedral face.
-      for (unsigned int i = 0; i < nv; ++i)
-      {
-        const unsigned int j = (i + 1) % nv;
-        const Tensor<1, dim> m_L = cross_product_3d(x[face.vertices[j]] - x[face.vertices[i]], face.n);
-        face.tangential_weight[i] += m_L / (2 * face.area);
-        face.tangential_weight[j] += m_L / (2 * face.area);
-      }
-    }
+    set_tangential_weights(face);
 
     const Point<dim>& r_P = centroid[face.P];
     const Tensor<1, dim> r_fP = face.centre - r_P;

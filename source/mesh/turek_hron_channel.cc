@@ -83,6 +83,25 @@ namespace fvfsi
         },
         block);
     }
+
+    /// Patches: 0 inlet (x = 0), 1 outlet (x = L), 2 channel walls (y = 0, H), 3 cylinder (the
+    /// circle of radius R about C), 4 flag.
+    void set_channel_patches(Triangulation<2>& tria, const Point<2>& C, const double R,
+                             const double L, const double H)
+    {
+      const double tol = 1e-9;
+      const auto on_circle = [&](const Point<2>& p) { return std::abs(p.distance(C) - R) < tol; };
+      for (const auto& face : tria.active_face_iterators())
+        if (face->at_boundary())
+        {
+          const Point<2> c = face->center();
+          face->set_boundary_id(std::abs(c[0]) < tol                                 ? 0
+                                : std::abs(c[0] - L) < tol                           ? 1
+                                : std::abs(c[1]) < tol || std::abs(c[1] - H) < tol   ? 2
+                                : on_circle(face->vertex(0)) && on_circle(face->vertex(1)) ? 3
+                                                                                           : 4);
+        }
+    }
   } // namespace
 
   void make_turek_hron_channel(const std::string& arguments, Triangulation<2>& tria)
@@ -95,6 +114,8 @@ namespace fvfsi
                                "on a quarter of the cylinder), got `" + arguments + "`");
     const unsigned int n = static_cast<unsigned int>(x[0]);
     const double beta = x.size() > 1 ? x[1] : 1.5; // radial grading towards the cylinder
+    // The function is one list of blocks (rings about the cylinder, rectangles around the flag
+    // and downstream): longer than a screen, but it reads as the mesh's drawing.
 
     // Geometry [m].
     const Point<2> C(0.2, 0.2);
@@ -166,18 +187,6 @@ namespace fvfsi
       pointers.push_back(b.get());
     GridGenerator::merge_triangulations(pointers, tria, 1e-9);
 
-    // Patches: 0 inlet, 1 outlet, 2 channel walls, 3 cylinder, 4 flag.
-    const double tol = 1e-9;
-    const auto on_circle = [&](const Point<2>& p) { return std::abs(p.distance(C) - R) < tol; };
-    for (const auto& face : tria.active_face_iterators())
-      if (face->at_boundary())
-      {
-        const Point<2> c = face->center();
-        face->set_boundary_id(std::abs(c[0]) < tol                                ? 0
-                              : std::abs(c[0] - L) < tol                          ? 1
-                              : std::abs(c[1]) < tol || std::abs(c[1] - H) < tol  ? 2
-                              : on_circle(face->vertex(0)) && on_circle(face->vertex(1)) ? 3
-                                                                                         : 4);
-      }
+    set_channel_patches(tria, C, R, L, H);
   }
 } // namespace fvfsi

@@ -13,6 +13,8 @@ namespace fvfsi
     {"Demirdzic-Muzaferija", Variant::demirdzic_muzaferija},
     {"Jasak-Weller", Variant::jasak_weller}};
 
+  // One entry after the other, each with the documentation that --print-parameters shows: a list
+  // longer than a screen, read as one.
   void SolidParameters::declare(ParameterHandler& prm)
   {
     prm.enter_subsection("Solid");

@@ -183,6 +183,10 @@ namespace fvfsi
     void solve_outer_iteration();
     void assemble_momentum();
     void add_convection_correction(unsigned int f, double phi);
+    /// The viscous and convective terms of boundary face f (relative flux phi).
+    void add_boundary_face_momentum(unsigned int f, double phi);
+    /// The time derivative (BDF2 or the local pseudo time step) and the body force.
+    void add_time_and_body_force_terms();
     void solve_momentum();
     void assemble_pressure_matrix();
     void compute_predicted_fluxes();

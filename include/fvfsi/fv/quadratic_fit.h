@@ -109,6 +109,8 @@ namespace fvfsi
 
     void build_stencil(unsigned int P, const std::vector<std::vector<unsigned int>>& cells_of,
                        const std::vector<std::vector<unsigned int>>& faces_of);
+    /// The offsets s_j of cell P's data from r_P; returns L^2 (0 without value data).
+    double offsets(unsigned int P, std::vector<dealii::Tensor<1, dim>>& s) const;
     /// The coefficients of cell P's data; false if they do not determine a quadratic.
     bool fit(unsigned int P);
 

@@ -133,6 +133,8 @@ namespace fvfsi
     void collect_faces();
     void compute_cell_geometry();
     void compute_face_geometry(FaceGeometry<dim>& face) const;
+    /// The weights of the face tangential gradient (Eq. 39) of `face`, its normal and area set.
+    void set_tangential_weights(FaceGeometry<dim>& face) const;
 
     const dealii::parallel::distributed::Triangulation<dim>& tria;
     dealii::FE_DGQ<dim> fe;
