@@ -88,7 +88,8 @@ namespace fvfsi
   bool is_benchmark_mesh(const std::string& name)
   {
     return name == "fvfsi_quarter_plate_with_hole" || name == "fvfsi_turek_hron_flag" ||
-           name == "fvfsi_turek_hron_channel";
+           name == "fvfsi_turek_hron_channel" || name == "fvfsi_cavity_channel" ||
+           name == "fvfsi_cavity_plate";
   }
 
   template <int dim>
@@ -102,6 +103,10 @@ namespace fvfsi
         return turek_hron_flag(arguments, tria);
       if (name == "fvfsi_turek_hron_channel")
         return make_turek_hron_channel(arguments, tria);
+      if (name == "fvfsi_cavity_channel")
+        return make_cavity_channel(arguments, tria);
+      if (name == "fvfsi_cavity_plate")
+        return make_cavity_plate(arguments, tria);
     }
     throw std::runtime_error("Mesh/Generator = " + name + " is not available in " + std::to_string(dim) + "D");
   }

@@ -12,8 +12,9 @@ namespace fvfsi
   bool is_benchmark_mesh(const std::string& name);
 
   /**
-   * Fill `tria` with the benchmark mesh `name` ("fvfsi_quarter_plate_with_hole" or
-   * "fvfsi_turek_hron_flag"), `arguments` separated by `:`.
+   * Fill `tria` with the benchmark mesh `name` ("fvfsi_quarter_plate_with_hole",
+   * "fvfsi_turek_hron_flag", "fvfsi_cavity_channel" or "fvfsi_cavity_plate"), `arguments`
+   * separated by `:`.
    *
    * fvfsi_quarter_plate_with_hole  a: b: n[: beta]   (paper section 4.1)
    *   The quarter plate [0,b]^2 without the disc of radius a about the origin, as two blocks of
@@ -25,9 +26,28 @@ namespace fvfsi
    *   The elastic flag 0.35 x 0.02 behind the cylinder of radius 0.05 at (0.2, 0.2): x from the
    *   cylinder arc to 0.6, y in [0.19, 0.21], nx x ny cells. Boundary ids: 0 on the cylinder
    *   (clamped end), 1 elsewhere (the flag surface).
+   *
+   * fvfsi_cavity_channel  h   (paper section 4.2, channel over a cavity with a flexible bottom)
+   *   The fluid domain: channel [0, 14] x [0, 1] over the cavity [2, 6] x [-1, 0], whose top
+   *   corners (2, 0) and (6, 0) are rounded with radius 0.25 (arcs about (1.75, -0.25) and
+   *   (6.25, -0.25)), as a block-structured quadrilateral mesh with cells of size about h (an
+   *   O-grid quadrant around each rounded corner, see cavity_meshes.cc). 4/h must be an integer
+   *   and h <= 0.2: the cavity floor has exactly 4/h cells of length h, matching
+   *   fvfsi_cavity_plate with the same h vertex for vertex. Arc vertices lie on the arcs; the arc
+   *   faces carry PolarManifolds (manifold ids 1, 2), so Global refinements keep the arcs.
+   *   Boundary ids: 0 inlet (x = 0), 1 outlet (x = 14), 2 walls (channel top and floor, cavity
+   *   walls, rounded corners), 3 interface (the cavity floor y = -1).
+   *
+   * fvfsi_cavity_plate  h   (the elastic cavity bottom of the same benchmark)
+   *   The plate [2, 6] x [-1.4, -1] as (4/h) x max(2, round(0.4/h)) cells (same conditions on h).
+   *   Boundary ids: 0 clamped (x = 2 and x = 6), 1 bottom (y = -1.4), 2 interface (top, y = -1).
    */
   /// The Turek-Hron fluid domain (fvfsi_turek_hron_channel), in turek_hron_channel.cc.
   void make_turek_hron_channel(const std::string& arguments, dealii::Triangulation<2>& tria);
+  /// The cavity benchmark's fluid domain (fvfsi_cavity_channel) and plate (fvfsi_cavity_plate),
+  /// in cavity_meshes.cc.
+  void make_cavity_channel(const std::string& arguments, dealii::Triangulation<2>& tria);
+  void make_cavity_plate(const std::string& arguments, dealii::Triangulation<2>& tria);
 
   template <int dim>
   void make_benchmark_mesh(const std::string& name, const std::string& arguments, dealii::Triangulation<dim>& tria);
