@@ -34,10 +34,13 @@ namespace fvfsi
     void run_scene(const AllParameters& p, const std::string& prm_directory, Summary& summary)
     {
       const std::string& out = p.run.output_directory;
-      using Scene = RunParameters::Scene;
+      const auto run = [&summary](auto&& scene) {
+        scene.run();
+        scene.write_summary(summary);
+      };
       switch (p.run.scene)
       {
-        case Scene::poisson:
+        case RunParameters::Scene::poisson:
         {
           PoissonProblem<dim> problem(p.mesh, p.poisson, MPI_COMM_WORLD, prm_directory);
           problem.run();
@@ -45,32 +48,20 @@ namespace fvfsi
           problem.output_results(out, summary);
           break;
         }
-        case Scene::solid:
-        {
-          SolidScene<dim> scene(p.mesh, p.solid, p.solid_scene, p.time, MPI_COMM_WORLD,
-                                prm_directory, out);
-          scene.run();
-          scene.write_summary(summary);
+        case RunParameters::Scene::solid:
+          run(SolidScene<dim>(p.mesh, p.solid, p.solid_scene, p.time, MPI_COMM_WORLD,
+                              prm_directory, out));
           break;
-        }
-        case Scene::fluid:
-        {
-          FluidScene<dim> scene(p.mesh, p.fluid, p.fluid_scene, p.time, MPI_COMM_WORLD,
-                                prm_directory, out);
-          scene.run();
-          scene.write_summary(summary);
+        case RunParameters::Scene::fluid:
+          run(FluidScene<dim>(p.mesh, p.fluid, p.fluid_scene, p.time, MPI_COMM_WORLD,
+                              prm_directory, out));
           break;
-        }
-        case Scene::fsi:
-        {
-          FsiScene<dim> scene(p.fsi_input(), MPI_COMM_WORLD, prm_directory, out);
-          scene.run();
-          scene.write_summary(summary);
+        case RunParameters::Scene::fsi:
+          run(FsiScene<dim>(p.fsi_input(), MPI_COMM_WORLD, prm_directory, out));
           break;
-        }
       }
     }
-  
+
     /// What the command line asks for.
     struct CommandLine
     {

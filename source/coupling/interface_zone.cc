@@ -134,49 +134,50 @@ namespace fvfsi
     return it->second;
   }
 
+  namespace
+  {
+    /// The zone field of n entries from the local values of the (local index, zone index) pairs
+    /// of every rank; an entry several ranks hold (a point on a processor boundary) takes the
+    /// lowest rank's value.
+    template <int dim>
+    std::vector<Tensor<1, dim>> gather(const std::vector<std::pair<unsigned int, unsigned int>>& pairs,
+                                       const std::vector<Tensor<1, dim>>& local_values,
+                                       const unsigned int n, const MPI_Comm comm)
+    {
+      std::vector<double> mine;
+      for (const auto& [local, i] : pairs)
+      {
+        mine.push_back(i);
+        mine.insert(mine.end(), &local_values[local][0], &local_values[local][0] + dim);
+      }
+      std::vector<Tensor<1, dim>> field(n);
+      std::vector<bool> set(n, false);
+      for (const auto& part : Utilities::MPI::all_gather(comm, mine))
+        for (unsigned int k = 0; k < part.size(); k += dim + 1)
+        {
+          const unsigned int i = static_cast<unsigned int>(part[k]);
+          if (set[i])
+            continue;
+          set[i] = true;
+          for (unsigned int d = 0; d < dim; ++d)
+            field[i][d] = part[k + 1 + d];
+        }
+      return field;
+    }
+  } // namespace
+
   template <int dim>
   std::vector<Tensor<1, dim>>
   InterfaceZone<dim>::gather_face_field(const std::vector<Tensor<1, dim>>& local_values) const
   {
-    std::vector<double> mine;
-    for (const auto& [f, i] : local_face_list)
-    {
-      mine.push_back(i);
-      for (unsigned int d = 0; d < dim; ++d)
-        mine.push_back(local_values[f][d]);
-    }
-    std::vector<Tensor<1, dim>> field(n_faces());
-    for (const auto& part : Utilities::MPI::all_gather(comm, mine))
-      for (unsigned int k = 0; k < part.size(); k += dim + 1)
-        for (unsigned int d = 0; d < dim; ++d)
-          field[static_cast<unsigned int>(part[k])][d] = part[k + 1 + d];
-    return field;
+    return gather(local_face_list, local_values, n_faces(), comm);
   }
 
   template <int dim>
   std::vector<Tensor<1, dim>>
   InterfaceZone<dim>::gather_point_field(const std::vector<Tensor<1, dim>>& local_values) const
   {
-    std::vector<double> mine;
-    for (const auto& [v, i] : local_point_list)
-    {
-      mine.push_back(i);
-      for (unsigned int d = 0; d < dim; ++d)
-        mine.push_back(local_values[v][d]);
-    }
-    std::vector<Tensor<1, dim>> field(n_points());
-    std::vector<bool> set(n_points(), false);
-    for (const auto& part : Utilities::MPI::all_gather(comm, mine))
-      for (unsigned int k = 0; k < part.size(); k += dim + 1)
-      {
-        const unsigned int i = static_cast<unsigned int>(part[k]);
-        if (set[i])
-          continue; // the lowest rank's value
-        set[i] = true;
-        for (unsigned int d = 0; d < dim; ++d)
-          field[i][d] = part[k + 1 + d];
-      }
-    return field;
+    return gather(local_point_list, local_values, n_points(), comm);
   }
 
   template class InterfaceZone<2>;

@@ -100,19 +100,10 @@ namespace fvfsi
   std::vector<FluidBoundaryCondition> FluidParameters::boundary_conditions() const
   {
     using Type = FluidBoundaryCondition::Type;
-    std::vector<FluidBoundaryCondition> bcs;
-    const auto with_values = [&bcs](const std::string& entry, const std::string& name, Type type) {
-      for (const auto& [patch, expression] : parse_named_values(entry, "Fluid/" + name))
-        bcs.push_back({patch, type, expression});
-    };
-    const auto names_only = [&bcs](const std::string& entry, Type type) {
-      for (const auto& patch : parse_names(entry))
-        bcs.push_back({patch, type, ""});
-    };
-    with_values(velocity_inlet, "Velocity inlet", Type::velocity_inlet);
-    with_values(outlet, "Outlet", Type::outlet);
-    names_only(wall, Type::wall);
-    names_only(symmetry, Type::symmetry);
-    return bcs;
+    return parse_boundary_entries<FluidBoundaryCondition, Type>(
+      {{velocity_inlet, "Fluid/Velocity inlet", Type::velocity_inlet, true},
+       {outlet, "Fluid/Outlet", Type::outlet, true},
+       {wall, "Fluid/Wall", Type::wall, false},
+       {symmetry, "Fluid/Symmetry", Type::symmetry, false}});
   }
 } // namespace fvfsi

@@ -62,7 +62,7 @@ namespace fvfsi
     const unsigned int P = face.P;
     const double a_diffusion = prm.nu * face.area / face.d_n; // Eq. 27
     const Tensor<1, dim>& u_b = boundary_u[f];
-    switch (face_condition[f].type)
+    switch (conditions.type(f))
     {
       case Type::velocity_inlet:
       case Type::wall:
@@ -177,7 +177,7 @@ namespace fvfsi
       const auto& face = geometry.faces[f];
       if (face.kind == FaceKind::ghost_boundary)
         continue;
-      if (face.N == invalid_cell && face_condition[f].type != Type::outlet)
+      if (face.N == invalid_cell && conditions.type(f) != Type::outlet)
       {
         gamma_p[f] = 0; // the flux is given
         continue;
@@ -230,9 +230,9 @@ namespace fvfsi
       const auto& face = geometry.faces[f];
       if (face.kind == FaceKind::ghost_boundary)
         continue;
-      if (face.N == invalid_cell && face_condition[f].type != Type::outlet)
+      if (face.N == invalid_cell && conditions.type(f) != Type::outlet)
       {
-        F_star[f] = face_condition[f].type == Type::velocity_inlet ? face.S * boundary_u[f]
+        F_star[f] = conditions.type(f) == Type::velocity_inlet ? face.S * boundary_u[f]
                                                                     : F_mesh[f];
         continue;
       }
@@ -284,7 +284,7 @@ namespace fvfsi
       pressure_rhs.local_element(face.P) -= F_star[f];
       if (face.kind == FaceKind::interior)
         pressure_rhs.local_element(face.N) += F_star[f];
-      if (face.N == invalid_cell && face_condition[f].type == Type::outlet)
+      if (face.N == invalid_cell && conditions.type(f) == Type::outlet)
         pressure_rhs.local_element(face.P) += gamma_p[f] * face.area / face.d_n * boundary_p[f];
     }
     // The flux correction below must use the gradient of the last solve's correction, so the

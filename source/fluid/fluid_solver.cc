@@ -75,38 +75,20 @@ namespace fvfsi
   template <int dim>
   void FluidSolver<dim>::setup_boundary_conditions(const MeshParameters& mesh_parameters)
   {
-    std::map<unsigned int, FaceCondition> by_patch;
-    for (const auto& bc : prm.boundary_conditions())
-    {
-      FaceCondition condition{bc.type, -1};
-      if (!bc.expression.empty())
-      {
-        const unsigned int n_components = bc.type == Type::outlet ? 1 : dim;
-        functions.push_back(std::make_unique<FunctionParser<dim>>(n_components));
-        initialize_function(*functions.back(), bc.expression,
-                            "Fluid boundary condition on " + bc.patch);
-        condition.expression = functions.size() - 1;
-      }
-      const unsigned int id = mesh_parameters.patch_id(bc.patch);
-      by_patch[id] = condition;
-      const bool velocity_given = bc.type == Type::velocity_inlet || bc.type == Type::wall;
-      velocity_bc.patch_type[id] = velocity_given ? BoundaryType::dirichlet : BoundaryType::neumann;
-      pressure_bc.patch_type[id] =
-        bc.type == Type::outlet ? BoundaryType::dirichlet : BoundaryType::neumann;
-    }
-    face_condition.resize(geometry.faces.size());
+    conditions = FaceConditions<dim, Type>(
+      geometry, mesh_parameters, prm.boundary_conditions(),
+      [](const Type t) { return t == Type::outlet ? 1u : static_cast<unsigned int>(dim); }, "Fluid",
+      "Fluid/Velocity inlet, Outlet, Wall or Symmetry");
     double n_outlet_faces = 0;
     for (unsigned int f = 0; f < geometry.faces.size(); ++f)
       if (geometry.faces[f].N == invalid_cell)
       {
-        const auto it = by_patch.find(geometry.faces[f].patch);
-        if (it == by_patch.end())
-          throw std::runtime_error("Fluid: patch `" +
-                                   mesh_parameters.patch_name(geometry.faces[f].patch) +
-                                   "` has no boundary condition (Fluid/Velocity inlet, Outlet, "
-                                   "Wall or Symmetry)");
-        face_condition[f] = it->second;
-        if (it->second.type == Type::outlet)
+        const Type t = conditions.type(f);
+        const unsigned int id = geometry.faces[f].patch;
+        const bool velocity_given = t == Type::velocity_inlet || t == Type::wall;
+        velocity_bc.patch_type[id] = velocity_given ? BoundaryType::dirichlet : BoundaryType::neumann;
+        pressure_bc.patch_type[id] = t == Type::outlet ? BoundaryType::dirichlet : BoundaryType::neumann;
+        if (t == Type::outlet)
           n_outlet_faces += 1;
       }
     // Without a pressure boundary the pressure is fixed to 0 in one reference cell.
@@ -154,11 +136,11 @@ namespace fvfsi
       Tensor<1, dim> extrapolated = u[P]; // zero normal gradient: u_P + k_P . grad u_P
       for (unsigned int j = 0; j < dim; ++j)
         extrapolated[j] += face.k_P * grad_u[j][P];
-      switch (face_condition[f].type)
+      switch (conditions.type(f))
       {
         case Type::velocity_inlet:
           for (unsigned int j = 0; j < dim; ++j)
-            boundary_u[f][j] = functions[face_condition[f].expression]->value(face.centre, j);
+            boundary_u[f][j] = conditions.function(f).value(face.centre, j);
           break;
         case Type::wall:
         {
@@ -205,8 +187,8 @@ namespace fvfsi
       const auto& face = geometry.faces[f];
       if (face.kind != FaceKind::boundary)
         continue;
-      if (face_condition[f].type == Type::outlet)
-        boundary_p[f] = functions[face_condition[f].expression]->value(face.centre) / prm.rho;
+      if (conditions.type(f) == Type::outlet)
+        boundary_p[f] = conditions.function(f).value(face.centre) / prm.rho;
       else
         boundary_p[f] = p.local_element(face.P) + face.d * grad_p[face.P];
       pressure_bc.value[f] = boundary_p[f];
@@ -324,8 +306,7 @@ namespace fvfsi
   void FluidSolver<dim>::begin_time_step()
   {
     body_force.set_time(clock.time());
-    for (auto& fn : functions)
-      fn->set_time(clock.time());
+    conditions.set_time(clock.time());
     if (prm.transient && prm.flux_extrapolation && clock.step() > 1)
     {
       // The first outer loop linearises about the extrapolated state: convecting flux

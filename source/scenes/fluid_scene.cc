@@ -20,14 +20,10 @@ namespace fvfsi
   void FluidSceneParameters::declare(ParameterHandler& prm)
   {
     prm.enter_subsection("Fluid scene");
-    prm.add_parameter("Force patches", force_patches,
-                      "Patches whose summed fluid force is reported as drag (x) and lift (y) "
-                      "[N, per unit depth in 2D], comma separated.");
-    prm.add_parameter("Probes", probes,
-                      "Named points whose velocity and pressure are recorded every time step in "
-                      "fluid_history.txt and reported in summary.json as point_<name>_velocity "
-                      "[m/s] and point_<name>_pressure [Pa]: `A: 0.6, 0.2 | B: 0.3, 0.21`; the "
-                      "points are fixed in space (also on a moving mesh).");
+    declare_entries(prm,
+                    "velocity [m/s] and pressure [Pa] (summary.json: point_<name>_velocity, "
+                    "point_<name>_pressure; the points are fixed in space, also on a moving mesh)",
+                    "fluid force (drag = x, lift = y)");
     prm.add_parameter("Exact velocity", exact_velocity,
                       "Exact u(x, y[, z], t) (dim expressions separated by `;`) for "
                       "results.max_velocity_error; empty: none.");
@@ -37,10 +33,6 @@ namespace fvfsi
                       "Transient: mean, amplitude and frequency of drag and lift over the last "
                       "this many seconds (0: none).",
                       Patterns::Double(0));
-    prm.add_parameter("Output interval", output_interval,
-                      "Write VTU every this many time steps (0: only the final state).");
-    prm.add_parameter("Progress interval", progress_interval,
-                      "Print a progress line every this many time steps.", Patterns::Integer(1));
     prm.leave_subsection();
     mesh_motion.declare(prm);
   }
@@ -74,26 +66,18 @@ namespace fvfsi
                               const FluidSceneParameters& scene_parameters,
                               const TimeParameters& time, MPI_Comm comm,
                               const std::string& prm_directory, const std::string& output_directory)
-    : comm(comm)
-    , mesh_parameters(mesh_parameters)
+    : Base(mesh_parameters, time, scene_parameters, "Fluid scene/Probes", comm, prm_directory,
+           output_directory)
     , fluid_parameters(fluid_parameters)
     , scene_parameters(scene_parameters)
-    , prm_directory(prm_directory)
-    , output_directory(output_directory)
-    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
-    , clock(time)
-    , triangulation(comm)
-    , probes(scene_parameters.probes, "Fluid scene/Probes")
   {
   }
 
   template <int dim>
   void FluidScene<dim>::make_grid()
   {
-    make_mesh(mesh_parameters, triangulation, prm_directory);
-    fv = std::make_unique<FVGeometry<dim>>(triangulation);
+    this->make_mesh_and_writer("fluid");
     fluid = std::make_unique<FluidSolver<dim>>(*fv, mesh_parameters, fluid_parameters, clock);
-    probes.locate(*fv);
     if (scene_parameters.mesh_motion.moves())
     {
       if (!fluid_parameters.transient)
@@ -105,17 +89,15 @@ namespace fvfsi
       motion = std::make_unique<MeshMotion<dim>>(*reference_fv, mesh_parameters,
                                                  scene_parameters.mesh_motion, clock);
     }
-    vtu_output = std::make_unique<VtuOutput<dim>>(*fv, output_directory, "fluid");
     // The history: t, forces, diagnostics, then u and p at every probe.
     std::vector<std::string> columns = {"t", "drag", "lift", "courant", "continuity_error"};
-    const char* axis[] = {"x", "y", "z"};
     for (unsigned int i = 0; i < probes.size(); ++i)
     {
-      for (unsigned int d = 0; d < dim; ++d)
-        columns.push_back(std::string("u") + axis[d] + "_" + probes.name(i));
+      for (const auto& c : Base::vector_columns("u", "_" + probes.name(i)))
+        columns.push_back(c);
       columns.push_back("p_" + probes.name(i));
     }
-    history = std::make_unique<HistoryFile>(output_directory + "/fluid_history.txt", columns, comm);
+    this->open_history("fluid_history.txt", columns);
   }
 
   template <int dim>
@@ -282,13 +264,13 @@ namespace fvfsi
       }
       result.n_time_steps = step;
       record_time_history();
-      if (step % scene_parameters.progress_interval == 0 || step == total)
+      if (this->progress_due(step, total))
         pcout << "fvfsi: fluid step " << step << "/" << total << ", t = " << clock.time()
               << " s, Courant " << fluid->courant_number() << ", drag " << history_drag.back()
               << ", lift " << history_lift.back()
               << (motion ? ", min V/V_ref " + std::to_string(result.min_volume_ratio) : std::string())
               << "\n";
-      if (scene_parameters.output_interval > 0 && step % scene_parameters.output_interval == 0)
+      if (this->output_due(step))
         output_results();
     }
     if (scene_parameters.output_interval == 0)

@@ -16,12 +16,8 @@ namespace fvfsi
   void SolidSceneParameters::declare(ParameterHandler& prm)
   {
     prm.enter_subsection("Solid scene");
-    prm.add_parameter("Probes", probes,
-                      "Named points whose displacement is recorded every time step and reported in "
-                      "summary.json as point_<name>_displacement: `A: 0.6, 0.2 | B: 0.3, 0.21`.");
-    prm.add_parameter("Force patches", force_patches,
-                      "Patches whose total force (sum of face forces, per unit depth in 2D) is "
-                      "recorded, comma separated.");
+    declare_entries(prm, "displacements (summary.json: point_<name>_displacement)",
+                    "force (sum of face forces)");
     prm.add_parameter("Exact displacement", exact_displacement,
                       "Exact u(x, y[, z]) (dim expressions separated by `;`) for the error norms; "
                       "empty: no errors.");
@@ -31,8 +27,6 @@ namespace fvfsi
     prm.add_parameter("Stress error patches", stress_error_patches,
                       "Patches on whose faces the max stress error is measured (summary.json: "
                       "max_<patch>_stress_error).");
-    prm.add_parameter("Output interval", output_interval,
-                      "Write VTU every this many time steps (0: only the final state).");
     prm.leave_subsection();
   }
 
@@ -41,37 +35,28 @@ namespace fvfsi
                               const SolidSceneParameters& scene_parameters,
                               const TimeParameters& time, MPI_Comm comm,
                               const std::string& prm_directory, const std::string& output_directory)
-    : comm(comm)
-    , mesh_parameters(mesh_parameters)
+    : Base(mesh_parameters, time, scene_parameters, "Solid scene/Probes", comm,
+                           prm_directory, output_directory)
     , solid_parameters(solid_parameters)
     , scene_parameters(scene_parameters)
-    , prm_directory(prm_directory)
-    , output_directory(output_directory)
-    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
-    , clock(time)
-    , triangulation(comm)
-    , probes(scene_parameters.probes, "Solid scene/Probes")
   {
   }
 
   template <int dim>
   void SolidScene<dim>::make_grid()
   {
-    make_mesh(mesh_parameters, triangulation, prm_directory);
-    fv = std::make_unique<FVGeometry<dim>>(triangulation);
-    solid = std::make_unique<SolidSolver<dim>>(*fv, mesh_parameters, solid_parameters, clock);
-    probes.locate(*fv);
-    vtu_output = std::make_unique<VtuOutput<dim>>(*fv, output_directory, "solid");
+    this->make_mesh_and_writer("solid");
+    solid = std::make_unique<SolidSolver<dim>>(*fv, mesh_parameters, solid_parameters,
+                                               clock);
     // The history: t, probe displacements, patch forces.
     std::vector<std::string> columns = {"t"};
-    const char* axis[] = {"x", "y", "z"};
     for (unsigned int i = 0; i < probes.size(); ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        columns.push_back(std::string("u") + axis[d] + "_" + probes.name(i));
+      for (const auto& c : Base::vector_columns("u", "_" + probes.name(i)))
+        columns.push_back(c);
     for (const auto& patch : scene_parameters.force_patches)
-      for (unsigned int d = 0; d < dim; ++d)
-        columns.push_back(std::string("F") + axis[d] + "_" + patch);
-    history = std::make_unique<HistoryFile>(output_directory + "/solid_history.txt", columns, comm);
+      for (const auto& c : Base::vector_columns("F", "_" + patch))
+        columns.push_back(c);
+    this->open_history("solid_history.txt", columns);
   }
 
   template <int dim>
@@ -171,10 +156,10 @@ namespace fvfsi
       result.total_outer_iterations += iterations;
       result.n_time_steps = step;
       record_time_history();
-      if (solid_parameters.transient && (step % 10 == 0 || step == n_steps))
+      if (solid_parameters.transient && this->progress_due(step, n_steps))
         pcout << "fvfsi: solid step " << step << "/" << n_steps << ", t = " << clock.time()
               << " s, " << iterations << " outer iterations\n";
-      if (scene_parameters.output_interval > 0 && step % scene_parameters.output_interval == 0)
+      if (this->output_due(step))
         output_results();
     }
     if (scene_parameters.output_interval == 0)

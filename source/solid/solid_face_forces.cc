@@ -16,7 +16,7 @@ Tensor<2, dim> SolidSolver<dim>::face_gradient(const unsigned int f) const
 {
   const auto& face = geometry.faces[f];
   const bool boundary = face.N == invalid_cell;
-  if (boundary && takes_traction(face_condition[f].type))
+  if (boundary && takes_traction(conditions.type(f)))
     return boundary_G[f]; // Eq. 24
   const Tensor<2, dim> G_P = cell_gradient(face.P);
   const Tensor<1, dim> u_P = u[face.P];
@@ -53,11 +53,11 @@ Tensor<1, dim> SolidSolver<dim>::boundary_traction(const unsigned int f,
 {
   // The force per reference area of a Cauchy traction t: t S'/S (Eq. 24), S'/S from Nanson.
   const auto& face = geometry.faces[f];
-  const auto& condition = face_condition[f];
+  const Type type = conditions.type(f);
   const Tensor<1, dim> area_ratio_n = deformed_area_vector(G, face.n, lame);
-  if (condition.type == Type::external_traction)
+  if (type == Type::external_traction)
     return area_ratio_n.norm() * external_traction[f];
-  if (condition.type == Type::pressure)
+  if (type == Type::pressure)
     return -given_traction[f][0] * area_ratio_n;
   return area_ratio_n.norm() * given_traction[f];
 }
@@ -68,12 +68,12 @@ void SolidSolver<dim>::evaluate_given_tractions()
   given_traction.resize(geometry.faces.size());
   for (const unsigned int f : boundary_faces)
   {
-    const auto& condition = face_condition[f];
-    if (condition.type == Type::pressure)
-      given_traction[f][0] = functions[condition.expression]->value(geometry.faces[f].centre);
-    else if (condition.type == Type::traction)
+    const Type type = conditions.type(f);
+    if (type == Type::pressure)
+      given_traction[f][0] = conditions.function(f).value(geometry.faces[f].centre);
+    else if (type == Type::traction)
       for (unsigned int d = 0; d < dim; ++d)
-        given_traction[f][d] = functions[condition.expression]->value(geometry.faces[f].centre, d);
+        given_traction[f][d] = conditions.function(f).value(geometry.faces[f].centre, d);
   }
 }
 
@@ -83,14 +83,14 @@ void SolidSolver<dim>::update_boundary_values()
   for (const unsigned int f : boundary_faces)
   {
     const auto& face = geometry.faces[f];
-    const auto& condition = face_condition[f];
+    const Type type = conditions.type(f);
     const Tensor<2, dim> G_P = cell_gradient(face.P);
     const Tensor<1, dim> extrapolated = u[face.P] + face.k_P * G_P;
-    switch (condition.type)
+    switch (type)
     {
     case Type::fixed_displacement:
     {
-      const auto& fn = *functions[condition.expression];
+      const auto& fn = conditions.function(f);
       for (unsigned int d = 0; d < dim; ++d)
         boundary_u[f][d] = fn.value(face.centre, d);
       break;
@@ -147,7 +147,7 @@ Tensor<1, dim> SolidSolver<dim>::face_force_density(const unsigned int f) const
     return lame.K() * (face.n * G_f) + first_piola_traction(G_bar, face.n, lame) -
            lame.K() * (face.n * G_bar);
   }
-  const auto type = face_condition[f].type;
+  const auto type = conditions.type(f);
   if (takes_traction(type))
     return boundary_traction(f, boundary_G[f]);
   const Tensor<1, dim> t = first_piola_traction(face_gradient(f), face.n, lame);

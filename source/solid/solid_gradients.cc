@@ -93,7 +93,7 @@ template <int dim>
 void SolidSolver<dim>::update_hessians()
 {
   for (const unsigned int f : boundary_faces)
-    if (takes_traction(face_condition[f].type))
+    if (takes_traction(conditions.type(f)))
       boundary_g_n[f] = geometry.faces[f].n * boundary_G[f];
   cell_hessian->compute(u, boundary_u, boundary_g_n, hessian);
   // 1/2 (k_P.H.k_P - d_n^2 n.H.n) per extrapolated boundary face, and the vertex fit's terms:
@@ -101,7 +101,7 @@ void SolidSolver<dim>::update_hessians()
   for (const unsigned int f : boundary_faces)
   {
     const auto& face = geometry.faces[f];
-    if (face_condition[f].type == Type::fixed_displacement)
+    if (conditions.type(f) == Type::fixed_displacement)
       continue;
     for (unsigned int j = 0; j < dim; ++j)
     {
@@ -146,7 +146,7 @@ void SolidSolver<dim>::find_constrained_vertices()
     if (face.N != invalid_cell)
       continue;
     for (const unsigned int v : face.vertices)
-      if (face_condition[f].type == Type::symmetry)
+      if (conditions.type(f) == Type::symmetry)
       {
         // Each distinct plane once (two planes meet at a corner: project on both).
         bool known = false;
@@ -155,8 +155,8 @@ void SolidSolver<dim>::find_constrained_vertices()
         if (!known)
           symmetry_vertex_normals.emplace_back(v, face.n);
       }
-      else if (face_condition[f].type == Type::fixed_displacement)
-        fixed_vertex_function[v] = functions[face_condition[f].expression].get();
+      else if (conditions.type(f) == Type::fixed_displacement)
+        fixed_vertex_function[v] = &conditions.function(f);
   }
 }
 

@@ -90,20 +90,11 @@ namespace fvfsi
   std::vector<SolidBoundaryCondition> SolidParameters::boundary_conditions() const
   {
     using Type = SolidBoundaryCondition::Type;
-    std::vector<SolidBoundaryCondition> bcs;
-    const auto with_values = [&bcs](const std::string& entry, const std::string& name, Type type) {
-      for (const auto& [patch, expression] : parse_named_values(entry, "Solid/" + name))
-        bcs.push_back({patch, type, expression});
-    };
-    const auto names_only = [&bcs](const std::string& entry, Type type) {
-      for (const auto& patch : parse_names(entry))
-        bcs.push_back({patch, type, ""});
-    };
-    with_values(fixed_displacement, "Fixed displacement", Type::fixed_displacement);
-    with_values(traction, "Traction", Type::traction);
-    with_values(pressure, "Pressure", Type::pressure);
-    names_only(symmetry, Type::symmetry);
-    names_only(external_traction, Type::external_traction);
-    return bcs;
+    return parse_boundary_entries<SolidBoundaryCondition, Type>(
+      {{fixed_displacement, "Solid/Fixed displacement", Type::fixed_displacement, true},
+       {traction, "Solid/Traction", Type::traction, true},
+       {pressure, "Solid/Pressure", Type::pressure, true},
+       {symmetry, "Solid/Symmetry", Type::symmetry, false},
+       {external_traction, "Solid/External traction", Type::external_traction, false}});
   }
 } // namespace fvfsi

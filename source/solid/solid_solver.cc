@@ -81,9 +81,9 @@ void SolidSolver<dim>::setup_hessian_correction()
   for (unsigned int f = 0; f < geometry.faces.size(); ++f)
     if (geometry.faces[f].N == invalid_cell)
     {
-      data.mirror_faces[f] = face_condition[f].type == Type::symmetry;
-      data.value_faces[f] = face_condition[f].type == Type::fixed_displacement;
-      data.normal_derivative_faces[f] = takes_traction(face_condition[f].type);
+      data.mirror_faces[f] = conditions.type(f) == Type::symmetry;
+      data.value_faces[f] = conditions.type(f) == Type::fixed_displacement;
+      data.normal_derivative_faces[f] = takes_traction(conditions.type(f));
     }
   cell_hessian = std::make_unique<QuadraticFit<dim>>(geometry, data);
   const unsigned int n_undetermined =
@@ -103,32 +103,10 @@ void SolidSolver<dim>::setup_hessian_correction()
 template <int dim>
 void SolidSolver<dim>::setup_boundary_conditions(const MeshParameters& mesh_parameters)
 {
-  std::map<unsigned int, FaceCondition> by_patch;
-  for (const auto& bc : parameters.boundary_conditions())
-  {
-    FaceCondition condition{bc.type, -1};
-    if (!bc.expression.empty())
-    {
-      const unsigned int n_components = bc.type == Type::pressure ? 1 : dim;
-      functions.push_back(std::make_unique<FunctionParser<dim>>(n_components));
-      initialize_function(*functions.back(), bc.expression,
-                          "Solid boundary condition on " + bc.patch);
-      condition.expression = functions.size() - 1;
-    }
-    by_patch[mesh_parameters.patch_id(bc.patch)] = condition;
-  }
-  face_condition.resize(geometry.faces.size());
-  for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    if (geometry.faces[f].N == invalid_cell)
-    {
-      const auto it = by_patch.find(geometry.faces[f].patch);
-      if (it == by_patch.end())
-        throw std::runtime_error("Solid: patch `" +
-                                 mesh_parameters.patch_name(geometry.faces[f].patch) +
-                                 "` has no boundary condition (use a traction of 0; 0 for a free "
-                                 "surface)");
-      face_condition[f] = it->second;
-    }
+  conditions = FaceConditions<dim, Type>(
+      geometry, mesh_parameters, parameters.boundary_conditions(),
+      [](const Type t) { return t == Type::pressure ? 1u : static_cast<unsigned int>(dim); },
+      "Solid", "use a traction of 0 for a free surface");
 }
 
 template <int dim>
@@ -140,14 +118,14 @@ void SolidSolver<dim>::assemble_matrices(const double mass_coefficient)
   for (unsigned int f = 0; f < geometry.faces.size(); ++f)
     if (geometry.faces[f].N == invalid_cell)
       bc.patch_type[geometry.faces[f].patch] =
-          takes_traction(face_condition[f].type) ? BoundaryType::neumann : BoundaryType::dirichlet;
+          takes_traction(conditions.type(f)) ? BoundaryType::neumann : BoundaryType::dirichlet;
   bc.value.assign(geometry.faces.size(), 0.0);
   CellVector unused_rhs = geometry.make_cell_vector();
   for (unsigned int j = 0; j < dim; ++j)
   {
     FaceVector gamma(geometry.faces.size(), lame.K());
     for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-      if (geometry.faces[f].N == invalid_cell && face_condition[f].type == Type::symmetry)
+      if (geometry.faces[f].N == invalid_cell && conditions.type(f) == Type::symmetry)
         gamma[f] *= geometry.faces[f].n[j] * geometry.faces[f].n[j];
     matrix[j] = 0;
     laplacian.assemble(gamma, bc, matrix[j], unused_rhs);
@@ -196,8 +174,7 @@ void SolidSolver<dim>::begin_time_step()
   for (unsigned int j = 0; j < dim; ++j) // b at the cell centres, once per time step
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
       body_force_value[j][c] = body_force.value(geometry.centroid[c], j);
-  for (auto& fn : functions)
-    fn->set_time(t);
+  conditions.set_time(t);
   evaluate_given_tractions();
   // The inertia term rho V a, a = c0 v - c1 v^o + c2 v^oo with v = c0 u - c1 u^o + c2 u^oo
   // (Eqs 17-18): its implicit part is rho V c0^2 u.

@@ -21,4 +21,31 @@ namespace fvfsi
 
   /// The names of a comma-separated list (trimmed, empty items dropped).
   std::vector<std::string> parse_names(const std::string& entry);
+
+  /// One .prm entry of boundary conditions: its text, its name (`Fluid/Wall`), the type of the
+  /// conditions it lists, and whether it lists `patch: expression` items or plain patch names.
+  template <typename Type>
+  struct BoundaryEntry
+  {
+    const std::string& text;
+    std::string name;
+    Type type;
+    bool with_expressions;
+  };
+
+  /// The (patch, type, expression) conditions that `entries` list; `Condition` is an aggregate of
+  /// those three members.
+  template <typename Condition, typename Type>
+  std::vector<Condition> parse_boundary_entries(const std::vector<BoundaryEntry<Type>>& entries)
+  {
+    std::vector<Condition> conditions;
+    for (const auto& e : entries)
+      if (e.with_expressions)
+        for (const auto& [patch, expression] : parse_named_values(e.text, e.name))
+          conditions.push_back({patch, e.type, expression});
+      else
+        for (const auto& patch : parse_names(e.text))
+          conditions.push_back({patch, e.type, ""});
+    return conditions;
+  }
 } // namespace fvfsi

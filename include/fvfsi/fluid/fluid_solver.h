@@ -157,11 +157,6 @@ namespace fvfsi
 
   private:
     using Type = FluidBoundaryCondition::Type;
-    struct FaceCondition
-    {
-      Type type = Type::wall;
-      int expression = -1; ///< index into `functions`, -1 for none
-    };
 
     void setup_boundary_conditions(const MeshParameters& mesh_parameters);
     void set_initial_conditions();
@@ -217,8 +212,7 @@ namespace fvfsi
     GaussGreenGradient<dim> gauss_green;
     Laplacian<dim> laplacian;
 
-    std::vector<FaceCondition> face_condition; ///< per boundary face
-    std::vector<std::unique_ptr<dealii::FunctionParser<dim>>> functions;
+    FaceConditions<dim, Type> conditions; ///< per boundary face
     dealii::FunctionParser<dim> body_force;
     bool pressure_level_fixed = false; ///< true if some outlet fixes p; else a reference cell
     ScalarBoundaryConditions<dim> velocity_bc, pressure_bc;

@@ -13,11 +13,8 @@
 #include <fvfsi/fluid/fluid_parameters.h>
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/fv/point_probes.h>
-#include <fvfsi/io/history_file.h>
 #include <fvfsi/io/summary.h>
-#include <fvfsi/io/vtu_output.h>
-#include <fvfsi/mesh/fv_geometry.h>
-#include <fvfsi/mesh/mesh_parameters.h>
+#include <fvfsi/scenes/scene_base.h>
 
 #include <memory>
 #include <string>
@@ -25,21 +22,15 @@
 
 namespace fvfsi
 {
-  struct FluidSceneParameters
+  /// `subsection Fluid scene` (probes: velocity and pressure; force patches: drag = x, lift = y)
+  /// and `subsection Mesh motion`.
+  struct FluidSceneParameters : SceneOutputParameters
   {
-    /// Patches whose summed force is the body force (drag = x, lift = y), comma separated.
-    std::vector<std::string> force_patches;
-    /// Named probe points, `A: 0.6, 0.2 | B: 0.2, 0.21`: velocity and pressure every time step.
-    std::string probes = "";
     /// Exact velocity (dim expressions of x, y[, z], t) and pressure [Pa]; empty: no errors.
     std::string exact_velocity = "", exact_pressure = "";
     /// Periodic flows: the mean, amplitude and frequency of the forces are taken over the
     /// samples with t >= End time - this [s] (0: none).
     double analysis_window = 0;
-    /// Write VTU every this many time steps (0: only the final state).
-    unsigned int output_interval = 0;
-    /// Print a progress line every this many time steps.
-    unsigned int progress_interval = 100;
     /// How the mesh moves (subsection `Mesh motion`; default: it does not).
     MeshMotionParameters mesh_motion;
 
@@ -67,7 +58,7 @@ namespace fvfsi
   };
 
   template <int dim>
-  class FluidScene
+  class FluidScene : public SingleMeshScene<dim>
   {
   public:
     FluidScene(const MeshParameters& mesh_parameters, const FluidParameters& fluid_parameters,
@@ -76,10 +67,8 @@ namespace fvfsi
 
     void run();
     void write_summary(Summary& summary) const;
-    const FVGeometry<dim>& geometry() const { return *fv; }
     const FluidSolver<dim>& solver() const { return *fluid; }
     const FluidResults& results() const { return result; }
-    const TimeControl& time() const { return clock; }
     /// Force of the fluid on the force patches [N] (per unit depth in 2D).
     dealii::Tensor<1, dim> body_force() const;
     /// The probes of `Fluid scene/Probes`, and the velocity [m/s] and pressure [Pa] at probe i
@@ -88,6 +77,10 @@ namespace fvfsi
     std::pair<dealii::Tensor<1, dim>, double> probe_values(unsigned int i) const;
 
   private:
+    using Base = SingleMeshScene<dim>;
+    using Base::clock, Base::comm, Base::fv, Base::history, Base::mesh_parameters, Base::pcout,
+      Base::probes, Base::triangulation, Base::vtu_output;
+
     void make_grid();
     void run_transient();
     /// Moves the mesh to its position at the clock's time: vertices (also those of the
@@ -97,21 +90,11 @@ namespace fvfsi
     void compute_errors();
     void output_results() const;
 
-    MPI_Comm comm;
-    MeshParameters mesh_parameters;
     FluidParameters fluid_parameters;
     FluidSceneParameters scene_parameters;
-    std::string prm_directory, output_directory;
-    dealii::ConditionalOStream pcout;
-    TimeControl clock;
-    dealii::parallel::distributed::Triangulation<dim> triangulation;
-    std::unique_ptr<FVGeometry<dim>> fv;
     std::unique_ptr<FluidSolver<dim>> fluid;
     std::unique_ptr<FVGeometry<dim>> reference_fv; ///< the undeformed mesh (moving meshes only)
     std::unique_ptr<MeshMotion<dim>> motion;
-    PointProbes<dim> probes;
-    std::unique_ptr<VtuOutput<dim>> vtu_output;
-    std::unique_ptr<HistoryFile> history;
 
     std::vector<double> history_t, history_drag, history_lift;
     std::vector<std::pair<dealii::Tensor<1, dim>, double>> final_probe_values;

@@ -3,17 +3,8 @@
 // solve), with probes, patch forces, time-history tables, VTU output, and errors against an exact
 // solution when the .prm gives one (e.g. the plate with a hole).
 
-#include <deal.II/base/function_parser.h>
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/distributed/tria.h>
-
-#include <fvfsi/base/time_control.h>
-#include <fvfsi/fv/point_probes.h>
-#include <fvfsi/io/history_file.h>
 #include <fvfsi/io/summary.h>
-#include <fvfsi/io/vtu_output.h>
-#include <fvfsi/mesh/fv_geometry.h>
-#include <fvfsi/mesh/mesh_parameters.h>
+#include <fvfsi/scenes/scene_base.h>
 #include <fvfsi/solid/solid_parameters.h>
 #include <fvfsi/solid/solid_solver.h>
 
@@ -23,21 +14,18 @@
 
 namespace fvfsi
 {
-  struct SolidSceneParameters
+  /// `subsection Solid scene`: probes (displacement), force patches, output, and the exact
+  /// solution of a verification case.
+  struct SolidSceneParameters : SceneOutputParameters
   {
-    /// Named probe points, `A: 0.6, 0.2 | B: 0.2, 0.21`.
-    std::string probes = "";
-    /// Patches whose total force is recorded, comma separated.
-    std::vector<std::string> force_patches;
     /// Exact displacement (dim expressions) for the error norms; empty: none.
     std::string exact_displacement = "";
     /// Exact Cauchy stress, 2D: `sxx; syy; sxy`, 3D: `sxx; syy; szz; sxy; syz; sxz`; empty: none.
     std::string exact_stress = "";
     /// Patches on whose faces the stress error is measured, comma separated.
     std::vector<std::string> stress_error_patches;
-    /// Write VTU every this many time steps (0: only at the end).
-    unsigned int output_interval = 0;
 
+    SolidSceneParameters() { progress_interval = 10; }
     void declare(dealii::ParameterHandler& prm);
   };
 
@@ -53,7 +41,7 @@ namespace fvfsi
   };
 
   template <int dim>
-  class SolidScene
+  class SolidScene : public SingleMeshScene<dim>
   {
   public:
     SolidScene(const MeshParameters& mesh_parameters, const SolidParameters& solid_parameters,
@@ -63,11 +51,13 @@ namespace fvfsi
     void run();
     void write_summary(Summary& summary) const;
     const SolidResults& results() const { return result; }
-    const FVGeometry<dim>& geometry() const { return *fv; }
     const SolidSolver<dim>& solver() const { return *solid; }
-    const TimeControl& time() const { return clock; }
 
   private:
+    using Base = SingleMeshScene<dim>;
+    using Base::clock, Base::comm, Base::fv, Base::history, Base::mesh_parameters, Base::pcout,
+      Base::probes, Base::vtu_output;
+
     void make_grid();
     void compute_errors();
     void record_time_history();
@@ -75,19 +65,9 @@ namespace fvfsi
     dealii::Tensor<1, dim> probe_displacement(unsigned int i) const;
     void output_results() const;
 
-    MPI_Comm comm;
-    MeshParameters mesh_parameters;
     SolidParameters solid_parameters;
     SolidSceneParameters scene_parameters;
-    std::string prm_directory, output_directory;
-    dealii::ConditionalOStream pcout;
-    TimeControl clock;
-    dealii::parallel::distributed::Triangulation<dim> triangulation;
-    std::unique_ptr<FVGeometry<dim>> fv;
     std::unique_ptr<SolidSolver<dim>> solid;
-    PointProbes<dim> probes;
-    std::unique_ptr<VtuOutput<dim>> vtu_output;
-    std::unique_ptr<HistoryFile> history;
     SolidResults result;
   };
 } // namespace fvfsi

@@ -35,6 +35,7 @@
 #include <deal.II/lac/la_parallel_block_vector.h>
 
 #include <fvfsi/base/time_control.h>
+#include <fvfsi/fv/boundary_conditions.h>
 #include <fvfsi/fv/cell_fields.h>
 #include <fvfsi/fv/gradients.h>
 #include <fvfsi/fv/laplacian.h>
@@ -105,11 +106,6 @@ namespace fvfsi
     void set_external_traction(const std::vector<dealii::Tensor<1, dim>>& traction);
 
   private:
-    struct FaceCondition
-    {
-      SolidBoundaryCondition::Type type;
-      int expression = -1; ///< index into `functions`, -1 for none
-    };
 
     using Variant = SolidParameters::Variant;
     /// The outer iterations' unknowns (dim blocks of owned cells) for the acceleration.
@@ -141,14 +137,13 @@ namespace fvfsi
     GaussGreenGradient<dim> gauss_green;
     Laplacian<dim> laplacian;
 
-    std::vector<FaceCondition> face_condition; ///< per face (boundary faces only)
+    FaceConditions<dim, SolidBoundaryCondition::Type> conditions; ///< per boundary face
     std::vector<unsigned int> boundary_faces;  ///< the faces of kind `boundary`
     std::vector<unsigned int> all_boundary_faces; ///< kinds `boundary` and `ghost_boundary`
     /// The traction (pressure: entry 0) expressions at the face centres at the current time, per
     /// face of a traction or pressure patch (evaluated once per time step, not per sweep).
     std::vector<dealii::Tensor<1, dim>> given_traction;
     void evaluate_given_tractions();
-    std::vector<std::unique_ptr<dealii::FunctionParser<dim>>> functions;
     dealii::FunctionParser<dim> body_force;
     std::array<std::vector<double>, dim> body_force_value; ///< b at the owned cell centres, this step
     std::vector<dealii::Tensor<1, dim>> external_traction;
