@@ -65,3 +65,24 @@ namespace fvfsi_test
     return p;
   }
 } // namespace fvfsi_test
+
+#include <filesystem>
+
+namespace fvfsi_test
+{
+  /// The fluid scene of prm/NAME.prm with Time/Time step = dt and the `extra` overrides, run
+  /// (writing to out/).
+  inline std::unique_ptr<fvfsi::FluidScene<2>> run_fluid_case(const std::string& name, const double dt,
+                                                             const std::vector<std::string>& extra)
+  {
+    std::vector<std::string> overrides = {"Time/Time step=" + format("%.17g", dt),
+                                          "Output directory=out"};
+    overrides.insert(overrides.end(), extra.begin(), extra.end());
+    const auto p = shipped_case(name, overrides);
+    std::filesystem::create_directories("out");
+    auto scene = std::make_unique<fvfsi::FluidScene<2>>(p->mesh, p->fluid, p->fluid_scene, p->time,
+                                                        MPI_COMM_WORLD, ".", "out");
+    scene->run();
+    return scene;
+  }
+} // namespace fvfsi_test

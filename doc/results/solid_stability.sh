@@ -160,6 +160,16 @@ header() {
   echo "|---|---|---|---|---|---|---|---|---|---|---|"
 }
 
+# CSM1 on 140 x 8 cells, undistorted and distorted by 0.3: csm1_distorted RUN_PREFIX OUTER_TOLERANCE
+csm1_distorted() {
+  header
+  for d in 0 0.3; do
+    run "$1/140x8/d$d" "$csm1" --set "Mesh/Generator arguments=140: 8" \
+      --set "Mesh/Distortion=$d" --set "Mesh/Distortion seed=1" --set "Solid/Body force=0; -2" \
+      --set "Solid/Outer tolerance=$2" --set "Solid/Max outer iterations=20000"
+  done
+}
+
 for section in "${sections[@]}"; do
   case $section in
   machine)
@@ -218,21 +228,11 @@ for section in "${sections[@]}"; do
       done
     done
     echo "== distorted meshes: CSM1, 140 x 8 cells, g = 2, outer tolerance 1e-7, max 20000 outer iterations"
-    header
-    for d in 0 0.3; do
-      run "distortion/csm1/140x8/d$d" "$csm1" --set "Mesh/Generator arguments=140: 8" \
-        --set "Mesh/Distortion=$d" --set "Mesh/Distortion seed=1" --set "Solid/Body force=0; -2" \
-        --set "Solid/Outer tolerance=1e-7" --set "Solid/Max outer iterations=20000"
-    done
+    csm1_distorted distortion/csm1 1e-7
     ;;
   csm1tight)
     echo "== CSM1, 140 x 8 cells, g = 2, outer tolerance 1e-10, max 20000 outer iterations"
-    header
-    for d in 0 0.3; do
-      run "csm1tight/140x8/d$d" "$csm1" --set "Mesh/Generator arguments=140: 8" \
-        --set "Mesh/Distortion=$d" --set "Mesh/Distortion seed=1" --set "Solid/Body force=0; -2" \
-        --set "Solid/Outer tolerance=1e-10" --set "Solid/Max outer iterations=20000"
-    done
+    csm1_distorted csm1tight 1e-10
     ;;
   gravity)
     echo "== load step: CSM1, 70 x 4 cells, one steady step, outer tolerance 1e-7, max 20000 outer iterations"

@@ -66,9 +66,7 @@ namespace fvfsi
     : reference(reference)
     , prm(parameters)
     , clock(clock)
-    , laplacian(reference)
-    , vertex_interpolation(reference)
-    , gauss_green(reference)
+    , operators(reference)
     , solver(parameters.solver)
     , vertex_dofs(reference.triangulation())
   {
@@ -81,9 +79,9 @@ namespace fvfsi
     {
       setup_patches(mesh_parameters);
       compute_diffusivity();
-      laplacian.reinit_matrix(matrix);
+      operators.laplacian.reinit_matrix(matrix);
       CellVector unused = reference.make_cell_vector();
-      laplacian.assemble(gamma, bc, matrix, unused);
+      operators.laplacian.assemble(gamma, bc, matrix, unused);
       matrix.compress(VectorOperation::add);
       solver.initialize(matrix); // the matrix never changes: one AMG set-up for the whole run
       for (unsigned int j = 0; j < dim; ++j)
@@ -247,14 +245,11 @@ namespace fvfsi
       control.max_iterations = prm.non_orthogonal_correctors + 1;
       const auto result = solve_deferred_correction(
         control, solver, matrix, rhs_boundary, d_cell[j],
-        [&](CellVector& rhs) { laplacian.add_correction(gamma, bc, grad_d[j], rhs); },
-        [&]() {
-          vertex_interpolation.interpolate(d_cell[j], bc.value, vertex_values);
-          gauss_green.compute(vertex_values, grad_d[j]);
-        },
+        [&](CellVector& rhs) { operators.laplacian.add_correction(gamma, bc, grad_d[j], rhs); },
+        [&]() { operators.gradient(d_cell[j], bc.value, vertex_values, grad_d[j]); },
         "mesh motion, component " + std::to_string(j));
       linear_iterations += result.linear_iterations;
-      for (const unsigned int v : vertex_interpolation.vertices())
+      for (const unsigned int v : operators.vertex_interpolation.vertices())
         if (boundary_vertex[v] < 0)
           d_vertex[v][j] = vertex_values[v];
     }
@@ -267,7 +262,7 @@ namespace fvfsi
     // Every rank computed the same values for the vertices its owned cells share (App. B stencils
     // lie in the ghost layer); the owner of each vertex dof sends its value to the ghosts.
     const IndexSet& owned = vertex_dofs.locally_owned_dofs();
-    for (const unsigned int v : vertex_interpolation.vertices())
+    for (const unsigned int v : operators.vertex_interpolation.vertices())
       for (unsigned int j = 0; j < dim; ++j)
         if (owned.is_element(vertex_dof[v][j]))
           vertex_vector[vertex_dof[v][j]] = d_vertex[v][j];

@@ -14,6 +14,12 @@ namespace fvfsi
   void CouplingParameters::declare(ParameterHandler& prm)
   {
     prm.enter_subsection("Coupling");
+    prm.add_parameter("Fluid interface", fluid_interface,
+                      "Fluid patches (of `Mesh`) that touch the solid, comma separated: walls that "
+                      "are also `Mesh motion/Moving patches` (the coupling sets their displacement).");
+    prm.add_parameter("Solid interface", solid_interface,
+                      "Solid patches (of `Solid mesh`) that touch the fluid, comma separated: "
+                      "`Solid/External traction` patches (the coupling sets their traction).");
     add_selection(prm, "Method", method, method_names,
                   "How the interface displacement is updated between the fluid and solid "
                   "solves of a time step (Algorithm 1): fixed (relaxation), Aitken (dynamic "

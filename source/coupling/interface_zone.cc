@@ -11,18 +11,6 @@ namespace fvfsi
 {
   using namespace dealii;
 
-  namespace
-  {
-    /// Coordinates as a map key: exact bits, which every rank computes identically.
-    template <int dim>
-    std::array<double, dim> key(const Point<dim>& x)
-    {
-      std::array<double, dim> k;
-      for (unsigned int d = 0; d < dim; ++d)
-        k[d] = x[d];
-      return k;
-    }
-  } // namespace
 
   namespace
   {
@@ -87,11 +75,11 @@ namespace fvfsi
       throw std::runtime_error("Interface " + name + ": its patches have no boundary face");
     // Faces ordered by their centres, points by their coordinates: independent of the ranks.
     std::sort(faces.begin(), faces.end(), [](const auto& a, const auto& b) {
-      return key(a.centre) < key(b.centre);
+      return point_key(a.centre) < point_key(b.centre);
     });
     for (const auto& face : faces)
       for (const auto& x : face.vertices)
-        point_lookup.emplace(key(x), 0);
+        point_lookup.emplace(point_key(x), 0);
     for (auto& [x, index] : point_lookup)
     {
       index = points.size();
@@ -102,13 +90,13 @@ namespace fvfsi
     std::map<std::array<double, dim>, unsigned int> face_index;
     for (const auto& face : faces)
     {
-      face_index[key(face.centre)] = face_centre.size();
+      face_index[point_key(face.centre)] = face_centre.size();
       face_centre.push_back(face.centre);
       face_normal.push_back(face.normal);
       face_area.push_back(face.area);
       std::array<unsigned int, n_face_points> corners;
       for (unsigned int j = 0; j < n_face_points; ++j)
-        corners[j] = point_lookup.at(key(face.vertices[j]));
+        corners[j] = point_lookup.at(point_key(face.vertices[j]));
       face_points.push_back(corners);
     }
 
@@ -117,9 +105,9 @@ namespace fvfsi
     for (unsigned int f = 0; f < geometry.faces.size(); ++f)
       if (on_interface(geometry.faces[f]))
       {
-        local_face_list.emplace_back(f, face_index.at(key(geometry.faces[f].centre)));
+        local_face_list.emplace_back(f, face_index.at(point_key(geometry.faces[f].centre)));
         for (const unsigned int v : geometry.faces[f].vertices)
-          local_point[v] = point_lookup.at(key(geometry.vertices()[v]));
+          local_point[v] = point_lookup.at(point_key(geometry.vertices()[v]));
       }
     local_point_list.assign(local_point.begin(), local_point.end());
   }
@@ -127,7 +115,7 @@ namespace fvfsi
   template <int dim>
   unsigned int InterfaceZone<dim>::point_index(const Point<dim>& x) const
   {
-    const auto it = point_lookup.find(key(x));
+    const auto it = point_lookup.find(point_key(x));
     if (it == point_lookup.end())
       throw std::runtime_error("Interface " + name + ": no interface point at " +
                                Utilities::to_string(x[0]) + ", " + Utilities::to_string(x[1]));

@@ -1,5 +1,5 @@
 // The FluidSolver's set-up, boundary values and gradients, and the time step driver. The PISO
-// steps themselves (momentum, pressure, corrections) are in fluid_piso.cc.
+// steps themselves (momentum, pressure, corrections) are in fluid_piso.templates.h.
 
 #include <deal.II/base/mpi.h>
 
@@ -7,6 +7,8 @@
 #include <fvfsi/base/parsed_function.h>
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/fv/ghost_faces.h>
+
+#include "fluid_piso.templates.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -24,9 +26,7 @@ namespace fvfsi
     , clock(clock)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(geometry.comm()) == 0)
     , timer_output(MPI_COMM_SELF, pcout, TimerOutput::never, TimerOutput::wall_times)
-    , vertex_interpolation(geometry)
-    , gauss_green(geometry)
-    , laplacian(geometry)
+    , operators(geometry)
     , body_force(dim)
     , momentum(geometry)
     , pressure_equation(geometry)
@@ -67,8 +67,8 @@ namespace fvfsi
     c0_cell.assign(geometry.n_owned_cells(), 0.0);
     c0_face.assign(n_faces, 0.0);
     nu_f.assign(n_faces, prm.nu);
-    laplacian.reinit_matrix(momentum_matrix);
-    laplacian.reinit_matrix(pressure_matrix);
+    operators.laplacian.reinit_matrix(momentum_matrix);
+    operators.laplacian.reinit_matrix(pressure_matrix);
     set_initial_conditions();
   }
 
@@ -127,11 +127,9 @@ namespace fvfsi
   template <int dim>
   void FluidSolver<dim>::update_velocity_boundary_values()
   {
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    for (const unsigned int f : geometry.boundary_faces())
     {
       const auto& face = geometry.faces[f];
-      if (face.kind != FaceKind::boundary)
-        continue;
       const unsigned int P = face.P;
       Tensor<1, dim> extrapolated = u[P]; // zero normal gradient: u_P + k_P . grad u_P
       for (unsigned int j = 0; j < dim; ++j)
@@ -172,8 +170,7 @@ namespace fvfsi
     {
       for (unsigned int f = 0; f < geometry.faces.size(); ++f)
         boundary_values[f] = boundary_u[f][j];
-      vertex_interpolation.interpolate(u.components[j], boundary_values, vertex_u[j]);
-      gauss_green.compute(vertex_u[j], grad_u[j]);
+      operators.gradient(u.components[j], boundary_values, vertex_u[j], grad_u[j]);
     }
   }
 
@@ -182,11 +179,9 @@ namespace fvfsi
   {
     // Outlets: the given pressure; elsewhere linear extrapolation from the cell (paper 3.2),
     // p_b = p_P + (r_f - r_P) . (grad p)_P.
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    for (const unsigned int f : geometry.boundary_faces())
     {
       const auto& face = geometry.faces[f];
-      if (face.kind != FaceKind::boundary)
-        continue;
       if (conditions.type(f) == Type::outlet)
         boundary_p[f] = conditions.function(f).value(face.centre) / prm.rho;
       else
@@ -200,8 +195,7 @@ namespace fvfsi
   void FluidSolver<dim>::update_pressure_gradient()
   {
     TimerOutput::Scope scope(timer_output, "pressure gradient");
-    vertex_interpolation.interpolate(p, boundary_p, vertex_p);
-    gauss_green.compute(vertex_p, grad_p);
+    operators.gradient(p, boundary_p, vertex_p, grad_p);
   }
 
   template <int dim>
@@ -241,8 +235,7 @@ namespace fvfsi
       throw std::runtime_error("Fluid: the mesh can only move in a transient run (Fluid/Transient)");
     AssertDimension(swept_volume.size(), geometry.faces.size());
     swept = swept_volume;
-    vertex_interpolation.reinit(); // their coefficients depend on the geometry
-    gauss_green.reinit();
+    operators.reinit(); // their coefficients depend on the geometry
   }
 
   template <int dim>
@@ -292,14 +285,6 @@ namespace fvfsi
   std::string FluidSolver<dim>::step_name() const
   {
     return prm.transient ? clock.step_name() : "pseudo time step " + std::to_string(pseudo_step);
-  }
-
-  template <int dim>
-  double FluidSolver<dim>::solve_time_step()
-  {
-    begin_time_step();
-    solve_current_step();
-    return end_time_step();
   }
 
   template <int dim>
@@ -370,7 +355,7 @@ namespace fvfsi
   }
 
   template <int dim>
-  double FluidSolver<dim>::end_time_step()
+  void FluidSolver<dim>::end_time_step()
   {
     // Relative change over the step.
     double max_du = 0, max_u = 0;
@@ -382,7 +367,7 @@ namespace fvfsi
     max_du = Utilities::MPI::max(max_du, geometry.comm());
     max_u = Utilities::MPI::max(max_u, geometry.comm());
     shift_time_levels();
-    return max_du / std::max(max_u, 1e-300);
+    last_change = max_du / std::max(max_u, 1e-300);
   }
 
   template <int dim>
@@ -420,7 +405,8 @@ namespace fvfsi
     {
       ++pseudo_step;
       solve_piso_step();
-      change = end_time_step();
+      end_time_step();
+      change = last_change;
       if (k % 100 == 0)
         pcout << "fvfsi: fluid pseudo time step " << k << ": relative change " << change
               << " (tolerance " << prm.steady_tolerance << "), continuity error "

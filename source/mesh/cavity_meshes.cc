@@ -36,6 +36,8 @@
 
 #include <fvfsi/mesh/benchmark_meshes.h>
 
+#include "block_mesh.h"
+
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -47,38 +49,7 @@ namespace fvfsi
 
   namespace
   {
-    using Curve = std::function<Point<2>(double)>; // s in [0, 1] -> point
-
-    Curve line(const Point<2>& a, const Point<2>& b)
-    {
-      return [a, b](const double s) { return Point<2>(a + s * (b - a)); };
-    }
-
-    Curve arc(const Point<2>& centre, const double radius, const double angle_0, const double angle_1)
-    {
-      return [=](const double s) {
-        const double phi = angle_0 + s * (angle_1 - angle_0);
-        return Point<2>(centre[0] + radius * std::cos(phi), centre[1] + radius * std::sin(phi));
-      };
-    }
-
-    /// A block with edges bottom(s), top(s) (t = 0, 1) and left(t), right(t) (s = 0, 1), n_s x n_t
-    /// uniform cells of the Coons patch. Orientation is fixed so that cells are not inverted.
-    void make_block(Triangulation<2>& block, const Curve& bottom, const Curve& top, const Curve& left,
-                    const Curve& right, const unsigned int n_s, const unsigned int n_t)
-    {
-      const auto coons = [&](const double s, const double t) {
-        return Point<2>((1 - t) * bottom(s) + t * top(s) + (1 - s) * left(t) + s * right(t) -
-                        ((1 - s) * (1 - t) * bottom(0) + s * (1 - t) * bottom(1) +
-                         (1 - s) * t * top(0) + s * t * top(1)));
-      };
-      const Tensor<1, 2> d_s = coons(0.51, 0.5) - coons(0.49, 0.5);
-      const Tensor<1, 2> d_t = coons(0.5, 0.51) - coons(0.5, 0.49);
-      const bool flip = d_s[0] * d_t[1] - d_s[1] * d_t[0] < 0;
-      GridGenerator::subdivided_hyper_rectangle(block, {n_s, n_t}, Point<2>(0, 0), Point<2>(1, 1));
-      GridTools::transform(
-        [&](const Point<2>& p) { return coons(flip ? 1 - p[0] : p[0], p[1]); }, block);
-    }
+    using namespace internal;
 
     /// The cell size h of `name`'s single argument; 4 / h (the cells along the cavity floor and
     /// the plate) must be an integer, and h <= 0.2.

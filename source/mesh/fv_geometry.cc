@@ -100,6 +100,8 @@ namespace fvfsi
     };
     const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm());
     faces.clear();
+    boundary_face_list.clear();
+    all_boundary_face_list.clear();
     faces_of_cell.assign(cells.size(), {});
     for (unsigned int c = 0; c < cells.size(); ++c)
       for (const unsigned int f : cells[c]->face_indices())
@@ -135,6 +137,10 @@ namespace fvfsi
         faces_of_cell[c].push_back(faces.size());
         if (face.kind == FaceKind::interior)
           faces_of_cell[face.N].push_back(faces.size());
+        if (face.kind == FaceKind::boundary)
+          boundary_face_list.push_back(faces.size());
+        if (face.N == invalid_cell)
+          all_boundary_face_list.push_back(faces.size());
         faces.push_back(face);
       }
   }

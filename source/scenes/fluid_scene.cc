@@ -93,7 +93,7 @@ namespace fvfsi
     std::vector<std::string> columns = {"t", "drag", "lift", "courant", "continuity_error"};
     for (unsigned int i = 0; i < probes.size(); ++i)
     {
-      for (const auto& c : Base::vector_columns("u", "_" + probes.name(i)))
+      for (const auto& c : vector_columns<dim>("u", "_" + probes.name(i)))
         columns.push_back(c);
       columns.push_back("p_" + probes.name(i));
     }
@@ -158,7 +158,7 @@ namespace fvfsi
                                 fluid->continuity_error()};
     for (const auto& [u, p] : final_probe_values)
     {
-      line.insert(line.end(), &u[0], &u[0] + dim);
+      append(line, u);
       line.push_back(p);
     }
     history->write_line(line);
@@ -169,57 +169,24 @@ namespace fvfsi
   {
     if (!scene_parameters.exact_velocity.empty())
     {
-      FunctionParser<dim> exact(dim);
-      initialize_function(exact, scene_parameters.exact_velocity, "Fluid scene/Exact velocity");
-      exact.set_time(clock.time());
-      double error = 0, l2 = 0;
-      for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
-        for (unsigned int j = 0; j < dim; ++j)
-        {
-          const double e = fluid->velocity()[c][j] - exact.value(fv->centroid[c], j);
-          error = std::max(error, std::abs(e));
-          l2 += fv->cell_volume[c] * e * e;
-        }
-      result.max_velocity_error = Utilities::MPI::max(error, comm);
-      result.l2_velocity_error = std::sqrt(Utilities::MPI::sum(l2, comm));
+      const CellErrors e = this->cell_errors(
+        scene_parameters.exact_velocity, "Fluid scene/Exact velocity", dim,
+        [this](const unsigned int c, const unsigned int j) { return fluid->velocity()[c][j]; });
+      result.max_velocity_error = e.max;
+      result.l2_velocity_error = e.l2;
     }
     if (!scene_parameters.exact_pressure.empty())
     {
-      FunctionParser<dim> exact(1);
-      initialize_function(exact, scene_parameters.exact_pressure, "Fluid scene/Exact pressure");
-      exact.set_time(clock.time());
       // Without an outlet the pressure is known up to a constant: compare p - mean(p).
-      const double rho = fluid_parameters.rho;
-      double offset = 0, volume = 0;
-      if (!fluid->pressure_level_is_fixed())
-      {
-        for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
-        {
-          offset += fv->cell_volume[c] * (rho * fluid->kinematic_pressure().local_element(c) -
-                                          exact.value(fv->centroid[c]));
-          volume += fv->cell_volume[c];
-        }
-        offset = Utilities::MPI::sum(offset, comm) / Utilities::MPI::sum(volume, comm);
-      }
-      double error = 0, l2 = 0;
-      for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
-      {
-        const double e = rho * fluid->kinematic_pressure().local_element(c) - offset -
-                         exact.value(fv->centroid[c]);
-        error = std::max(error, std::abs(e));
-        l2 += fv->cell_volume[c] * e * e;
-      }
-      result.max_pressure_error = Utilities::MPI::max(error, comm);
-      result.l2_pressure_error = std::sqrt(Utilities::MPI::sum(l2, comm));
+      const CellErrors e = this->cell_errors(
+        scene_parameters.exact_pressure, "Fluid scene/Exact pressure", 1,
+        [this](const unsigned int c, unsigned int) {
+          return fluid_parameters.rho * fluid->kinematic_pressure().local_element(c);
+        },
+        !fluid->pressure_level_is_fixed());
+      result.max_pressure_error = e.max;
+      result.l2_pressure_error = e.l2;
     }
-  }
-
-  template <int dim>
-  void FluidScene<dim>::output_results() const
-  {
-    OutputFields<dim> fields(*fv);
-    fluid->add_output_fields(fields);
-    vtu_output->write(fields, clock.step(), clock.time());
   }
 
   template <int dim>
@@ -235,7 +202,7 @@ namespace fvfsi
       result.n_time_steps = fluid->solve_steady();
       record_time_history();
       pcout << "fvfsi: fluid steady solution after " << result.n_time_steps << " pseudo time steps\n";
-      output_results();
+      this->write_output(*fluid);
     }
     else
       run_transient();
@@ -271,10 +238,10 @@ namespace fvfsi
               << (motion ? ", min V/V_ref " + std::to_string(result.min_volume_ratio) : std::string())
               << "\n";
       if (this->output_due(step))
-        output_results();
+        this->write_output(*fluid);
     }
     if (scene_parameters.output_interval == 0)
-      output_results();
+      this->write_output(*fluid);
   }
 
   template <int dim>

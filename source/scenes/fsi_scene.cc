@@ -21,19 +21,6 @@ namespace fvfsi
     }
   } // namespace
 
-  void FsiSceneParameters::declare(ParameterHandler& prm)
-  {
-    prm.enter_subsection("FSI");
-    prm.add_parameter("Fluid interface", fluid_interface,
-                      "Fluid patches (of `Mesh`) that touch the solid, comma separated: walls that "
-                      "are also `Mesh motion/Moving patches` (the coupling sets their displacement).");
-    prm.add_parameter("Solid interface", solid_interface,
-                      "Solid patches (of `Solid mesh`) that touch the fluid, comma separated: "
-                      "`Solid/External traction` patches (the coupling sets their traction).");
-    prm.leave_subsection();
-    coupling.declare(prm);
-  }
-
   template <int dim>
   FsiScene<dim>::FsiScene(const FsiSceneInput& input, MPI_Comm comm,
                           const std::string& prm_directory, const std::string& output_directory)
@@ -60,9 +47,9 @@ namespace fvfsi
       throw std::runtime_error("FSI: the fluid mesh must follow the interface: set Mesh motion/Type = "
                                "Laplace and list the fluid interface patches in Mesh motion/Moving "
                                "patches");
-    if (prm.fluid_interface.empty() || prm.solid_interface.empty())
-      throw std::runtime_error("FSI: name the interface patches (FSI/Fluid interface and FSI/Solid "
-                               "interface)");
+    if (prm.coupling.fluid_interface.empty() || prm.coupling.solid_interface.empty())
+      throw std::runtime_error("FSI: name the interface patches (Coupling/Fluid interface and "
+                               "Coupling/Solid interface)");
   }
 
   template <int dim>
@@ -87,9 +74,9 @@ namespace fvfsi
     // The interface, whole on every rank, and the maps between its two sides (computed once,
     // on the undeformed meshes, where the two sides coincide).
     fluid_zone = std::make_unique<InterfaceZone<dim>>(
-      *fluid_fv, patch_ids(fluid_mesh_parameters, prm.fluid_interface), "FSI/Fluid interface");
+      *fluid_fv, patch_ids(fluid_mesh_parameters, prm.coupling.fluid_interface), "Coupling/Fluid interface");
     solid_zone = std::make_unique<InterfaceZone<dim>>(
-      *solid_fv, patch_ids(solid_mesh_parameters, prm.solid_interface), "FSI/Solid interface");
+      *solid_fv, patch_ids(solid_mesh_parameters, prm.coupling.solid_interface), "Coupling/Solid interface");
     traction_map = std::make_unique<FaceInterpolation<dim>>(*fluid_zone, *solid_zone);
     displacement_map = std::make_unique<VertexProjection<dim>>(*solid_zone, *fluid_zone);
     acceleration = std::make_unique<CouplingAcceleration>(prm.coupling);
@@ -103,10 +90,9 @@ namespace fvfsi
     fluid_output = std::make_unique<VtuOutput<dim>>(*fluid_fv, output_directory, "fluid");
     solid_output = std::make_unique<VtuOutput<dim>>(*solid_fv, output_directory, "solid");
     std::vector<std::string> columns = {"t", "coupling_iterations", "relative_residual", "drag", "lift"};
-    const char* axis[] = {"x", "y", "z"};
     for (unsigned int i = 0; i < probes.size(); ++i)
-      for (unsigned int c = 0; c < dim; ++c)
-        columns.push_back(std::string("u") + axis[c] + "_" + probes.name(i));
+      for (const auto& c : vector_columns<dim>("u", "_" + probes.name(i)))
+        columns.push_back(c);
     history = std::make_unique<HistoryFile>(output_directory + "/fsi_history.txt", columns, comm);
   }
 
@@ -118,7 +104,7 @@ namespace fvfsi
       // Every interface vertex this rank's cells touch (ghost cells' too), found in the zone by
       // its reference position.
       std::vector<Tensor<1, dim>> vertex_displacement(fluid_fv->vertices().size());
-      for (const auto& patch : prm.fluid_interface)
+      for (const auto& patch : prm.coupling.fluid_interface)
       {
         for (const unsigned int v : motion->patch_vertices(patch))
           vertex_displacement[v] = point_value<dim>(
@@ -243,10 +229,7 @@ namespace fvfsi
   template <int dim>
   Tensor<1, dim> FsiScene<dim>::solid_probe(const unsigned int i) const
   {
-    return probes.template evaluate<Tensor<1, dim>>(
-      i, [this](const unsigned int c, const Tensor<1, dim>& dx) {
-        return solid->displacement()[c] + dx * solid->cell_gradient(c);
-      });
+    return solid->probe_displacement(probes, i);
   }
 
   template <int dim>
@@ -262,7 +245,7 @@ namespace fvfsi
     for (unsigned int i = 0; i < probes.size(); ++i)
     {
       const Tensor<1, dim> u = solid_probe(i);
-      line.insert(line.end(), &u[0], &u[0] + dim);
+      append(line, u);
     }
     history->write_line(line);
   }

@@ -57,17 +57,6 @@ namespace fvfsi
   }
 
   template <int dim>
-  std::vector<std::string> SingleMeshScene<dim>::vector_columns(const std::string& base,
-                                                                 const std::string& suffix)
-  {
-    const char* axis[] = {"x", "y", "z"};
-    std::vector<std::string> columns;
-    for (unsigned int d = 0; d < dim; ++d)
-      columns.push_back(base + axis[d] + suffix);
-    return columns;
-  }
-
-  template <int dim>
   bool SingleMeshScene<dim>::progress_due(const unsigned int step, const unsigned int n_steps) const
   {
     return step % output_parameters.progress_interval == 0 || step == n_steps;

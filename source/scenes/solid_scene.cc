@@ -51,10 +51,10 @@ namespace fvfsi
     // The history: t, probe displacements, patch forces.
     std::vector<std::string> columns = {"t"};
     for (unsigned int i = 0; i < probes.size(); ++i)
-      for (const auto& c : Base::vector_columns("u", "_" + probes.name(i)))
+      for (const auto& c : vector_columns<dim>("u", "_" + probes.name(i)))
         columns.push_back(c);
     for (const auto& patch : scene_parameters.force_patches)
-      for (const auto& c : Base::vector_columns("F", "_" + patch))
+      for (const auto& c : vector_columns<dim>("F", "_" + patch))
         columns.push_back(c);
     this->open_history("solid_history.txt", columns);
   }
@@ -62,10 +62,7 @@ namespace fvfsi
   template <int dim>
   Tensor<1, dim> SolidScene<dim>::probe_displacement(const unsigned int i) const
   {
-    return probes.template evaluate<Tensor<1, dim>>(
-      i, [this](const unsigned int c, const Tensor<1, dim>& dx) {
-        return solid->displacement()[c] + dx * solid->cell_gradient(c);
-      });
+    return solid->probe_displacement(probes, i);
   }
 
   template <int dim>
@@ -76,12 +73,12 @@ namespace fvfsi
     for (unsigned int i = 0; i < probes.size(); ++i)
     {
       const Tensor<1, dim> u = probe_displacement(i);
-      line.insert(line.end(), &u[0], &u[0] + dim);
+      append(line, u);
     }
     for (const auto& patch : scene_parameters.force_patches)
     {
       const Tensor<1, dim> F = solid->patch_force(mesh_parameters.patch_id(patch));
-      line.insert(line.end(), &F[0], &F[0] + dim);
+      append(line, F);
     }
     history->write_line(line);
   }
@@ -91,13 +88,12 @@ namespace fvfsi
   {
     if (!scene_parameters.exact_displacement.empty())
     {
-      FunctionParser<dim> exact(dim);
-      initialize_function(exact, scene_parameters.exact_displacement, "Solid scene/Exact displacement");
-      double max_error = 0;
-      for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
-        for (unsigned int d = 0; d < dim; ++d)
-          max_error = std::max(max_error, std::abs(solid->displacement()[c][d] - exact.value(fv->centroid[c], d)));
-      result.max_displacement_error = Utilities::MPI::max(max_error, comm);
+      result.max_displacement_error =
+        this->cell_errors(scene_parameters.exact_displacement, "Solid scene/Exact displacement", dim,
+                          [this](const unsigned int c, const unsigned int d) {
+                            return solid->displacement()[c][d];
+                          })
+          .max;
     }
     if (!scene_parameters.exact_stress.empty())
     {
@@ -133,14 +129,6 @@ namespace fvfsi
   }
 
   template <int dim>
-  void SolidScene<dim>::output_results() const
-  {
-    OutputFields<dim> fields(*fv);
-    solid->add_output_fields(fields);
-    vtu_output->write(fields, clock.step(), clock.time());
-  }
-
-  template <int dim>
   void SolidScene<dim>::run()
   {
     make_grid();
@@ -152,7 +140,8 @@ namespace fvfsi
     for (unsigned int step = 1; step <= n_steps; ++step)
     {
       clock.advance();
-      const unsigned int iterations = solid->solve_time_step();
+      solid->solve_time_step();
+      const unsigned int iterations = solid->outer_iterations();
       result.total_outer_iterations += iterations;
       result.n_time_steps = step;
       record_time_history();
@@ -160,10 +149,10 @@ namespace fvfsi
         pcout << "fvfsi: solid step " << step << "/" << n_steps << ", t = " << clock.time()
               << " s, " << iterations << " outer iterations\n";
       if (this->output_due(step))
-        output_results();
+        this->write_output(*solid);
     }
     if (scene_parameters.output_interval == 0)
-      output_results();
+      this->write_output(*solid);
     compute_errors();
   }
 

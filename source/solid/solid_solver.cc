@@ -3,6 +3,9 @@
 #include <fvfsi/base/parsed_function.h>
 #include <fvfsi/solid/solid_solver.h>
 
+#include "solid_face_forces.templates.h"
+#include "solid_gradients.templates.h"
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -32,13 +35,6 @@ SolidSolver<dim>::SolidSolver(const FVGeometry<dim>& geometry,
     b.assign(geometry.n_owned_cells(), 0.0);
   setup_boundary_conditions(mesh_parameters);
   find_constrained_vertices();
-  for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-  {
-    if (geometry.faces[f].kind == FaceKind::boundary)
-      boundary_faces.push_back(f);
-    if (geometry.faces[f].N == invalid_cell)
-      all_boundary_faces.push_back(f);
-  }
   evaluate_given_tractions();
   if (parameters.variant == Variant::present && parameters.hessian_correction)
     setup_hessian_correction();
@@ -69,7 +65,7 @@ SolidSolver<dim>::SolidSolver(const FVGeometry<dim>& geometry,
 template <int dim>
 void SolidSolver<dim>::setup_hessian_correction()
 {
-  // The data of the fit (see solid_gradients.cc): mirror images across symmetry planes, the given
+  // The data of the fit (see solid_gradients.templates.h): mirror images across symmetry planes, the given
   // displacements, and the normal derivative of Eq. 24 at traction faces.
   QuadraticFitData data;
   data.weight_exponent = 2;
@@ -158,15 +154,6 @@ void SolidSolver<dim>::shift_time_levels()
 }
 
 template <int dim>
-unsigned int SolidSolver<dim>::solve_time_step()
-{
-  begin_time_step();
-  const unsigned int iterations = solve_current_step();
-  end_time_step();
-  return iterations;
-}
-
-template <int dim>
 void SolidSolver<dim>::begin_time_step()
 {
   const double t = clock.time();
@@ -193,7 +180,7 @@ void SolidSolver<dim>::end_time_step()
 }
 
 template <int dim>
-unsigned int SolidSolver<dim>::solve_current_step()
+void SolidSolver<dim>::solve_current_step()
 {
   // Outer iterations: the fixed point u = u + A^-1 R(u), accelerated by Anderson mixing.
   acceleration.clear();
@@ -210,7 +197,8 @@ unsigned int SolidSolver<dim>::solve_current_step()
     if (change < parameters.outer_tolerance)
     {
       update_gradients();
-      return k;
+      last_outer_iterations = k;
+      return;
     }
   }
   throw std::runtime_error("Solid: outer iterations did not converge at " + clock.step_name() +
@@ -330,6 +318,14 @@ template <int dim>
 void SolidSolver<dim>::set_external_traction(const std::vector<Tensor<1, dim>>& traction)
 {
   external_traction = traction;
+}
+
+template <int dim>
+Tensor<1, dim> SolidSolver<dim>::probe_displacement(const PointProbes<dim>& probes,
+                                                    const unsigned int i) const
+{
+  return probes.template evaluate<Tensor<1, dim>>(
+      i, [this](const unsigned int c, const Tensor<1, dim>& dx) { return u[c] + dx * cell_gradient(c); });
 }
 
 template <int dim>

@@ -12,6 +12,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/distributed/tria.h>
 
+#include <fvfsi/fv/cell_fields.h>
 #include <fvfsi/mesh/fv_geometry.h>
 #include <fvfsi/mesh/mesh_builder.h>
 #include <fvfsi/mesh/mesh_parameters.h>
@@ -22,7 +23,9 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace fvfsi_core_test
@@ -91,6 +94,57 @@ namespace fvfsi_core_test
     fvfsi::make_mesh(p, tria);
   }
 
+  /// A distorted test mesh (make_test_mesh, distortion 0.25) and its FV geometry, announced by
+  /// a line in `out` that names it.
+  template <int dim>
+  struct TestMesh
+  {
+    TestMesh(std::ostream& out, const std::string& generator, const std::string& arguments,
+             const unsigned int refinements)
+      : tria(MPI_COMM_WORLD)
+    {
+      out << "--- " << dim << "D " << generator << " (" << arguments << "), " << refinements
+          << " refinements, distortion 0.25" << std::endl;
+      make_test_mesh(tria, generator, arguments, refinements, 0.25);
+      fv = std::make_unique<fvfsi::FVGeometry<dim>>(tria);
+    }
+    parallel::distributed::Triangulation<dim> tria;
+    std::unique_ptr<fvfsi::FVGeometry<dim>> fv;
+  };
+
+  /// The main program of an exactness test: `test<dim>(out, generator, arguments, refinements)`
+  /// on the four distorted meshes, the cube and the L-shape, 2D (4 and 3 refinements) and 3D (3
+  /// and 2), the results in the file `output`.
+  template <void (*test_2d)(std::ostream&, const std::string&, const std::string&, unsigned int),
+            void (*test_3d)(std::ostream&, const std::string&, const std::string&, unsigned int)>
+  int exactness_main(int argc, char** argv)
+  {
+    dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    std::ofstream out;
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      out.open("output");
+    test_2d(out, "hyper_cube", "-0.5 : 1.5 : true", 4);
+    test_2d(out, "hyper_L", "-1 : 1 : false", 3);
+    test_3d(out, "hyper_cube", "-0.5 : 1.5 : true", 3);
+    test_3d(out, "hyper_L", "-1 : 1 : false", 2);
+    return 0;
+  }
+
+  /// A field's exact values: at the cell centroids (ghosts included) and on the boundary and
+  /// ghost_boundary faces (other entries 0).
+  template <int dim, typename Field>
+  void exact_values(const fvfsi::FVGeometry<dim>& fv, const Field& field, fvfsi::CellVector& phi,
+                    fvfsi::FaceVector& boundary)
+  {
+    phi = fv.make_cell_vector();
+    for (unsigned int c = 0; c < fv.n_owned_cells(); ++c)
+      phi.local_element(c) = field(fv.centroid[c]);
+    phi.update_ghost_values();
+    boundary.assign(fv.faces.size(), 0.0);
+    for (const unsigned int f : fv.all_boundary_faces())
+      boundary[f] = field(fv.faces[f].centre);
+  }
+
   /// phi = a + b . x, the field every linear-exactness check uses.
   template <int dim>
   struct LinearField
@@ -106,15 +160,6 @@ namespace fvfsi_core_test
     double operator()(const Point<dim>& x) const { return a + b * x; }
   };
 
-  /// A point's coordinates as an array (a map key comparing the exact bits of the doubles).
-  template <int dim>
-  std::array<double, dim> key(const Point<dim>& p)
-  {
-    std::array<double, dim> k;
-    for (unsigned int d = 0; d < dim; ++d)
-      k[d] = p[d];
-    return k;
-  }
 
   /// Gather records of `width` doubles from all ranks to rank 0 (bit-exact: deal.II packs the raw
   /// bytes). Returns the concatenation on rank 0, nothing elsewhere.

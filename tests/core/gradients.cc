@@ -71,11 +71,8 @@ template <int dim>
 void test(std::ostream& out, const std::string& generator, const std::string& arguments,
           const unsigned int refinements)
 {
-  out << "--- " << dim << "D " << generator << " (" << arguments << "), " << refinements
-      << " refinements, distortion 0.25" << std::endl;
-  parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
-  make_test_mesh(tria, generator, arguments, refinements, 0.25);
-  const fvfsi::FVGeometry<dim> fv(tria);
+  const TestMesh<dim> mesh(out, generator, arguments, refinements);
+  const fvfsi::FVGeometry<dim>& fv = *mesh.fv;
   const fvfsi::VertexInterpolation<dim> interpolation(fv);
   const fvfsi::LeastSquaresGradient<dim> least_squares(fv);
   const fvfsi::Laplacian<dim> laplacian(fv);
@@ -83,14 +80,9 @@ void test(std::ostream& out, const std::string& generator, const std::string& ar
 
   const LinearField<dim> field;
   const Tensor<1, dim> b = field.b;
-  fvfsi::CellVector phi(fv.partitioner());
-  for (unsigned int c = 0; c < fv.n_owned_cells(); ++c)
-    phi.local_element(c) = field(fv.centroid[c]);
-  phi.update_ghost_values();
-  fvfsi::FaceVector boundary(faces.size(), 0.0);
-  for (unsigned int f = 0; f < faces.size(); ++f)
-    if (faces[f].N == fvfsi::invalid_cell)
-      boundary[f] = field(faces[f].centre);
+  fvfsi::CellVector phi;
+  fvfsi::FaceVector boundary;
+  exact_values(fv, field, phi, boundary);
 
   std::vector<double> vertex_values(fv.vertices().size(), std::numeric_limits<double>::quiet_NaN());
   interpolation.interpolate(phi, boundary, vertex_values);
@@ -161,10 +153,5 @@ void test(std::ostream& out, const std::string& generator, const std::string& ar
 
 int main(int argc, char** argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out = open_output();
-  test<2>(out, "hyper_cube", "-0.5 : 1.5 : true", 4);
-  test<2>(out, "hyper_L", "-1 : 1 : false", 3);
-  test<3>(out, "hyper_cube", "-0.5 : 1.5 : true", 3);
-  test<3>(out, "hyper_L", "-1 : 1 : false", 2);
+  return exactness_main<test<2>, test<3>>(argc, argv);
 }

@@ -131,11 +131,8 @@ template <int dim>
 void test(std::ostream& out, const std::string& generator, const std::string& arguments,
           const unsigned int refinements)
 {
-  out << "--- " << dim << "D " << generator << " (" << arguments << "), " << refinements
-      << " refinements, distortion 0.25" << std::endl;
-  parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
-  make_test_mesh(tria, generator, arguments, refinements, 0.25);
-  const fvfsi::FVGeometry<dim> fv(tria);
+  const TestMesh<dim> mesh(out, generator, arguments, refinements);
+  const fvfsi::FVGeometry<dim>& fv = *mesh.fv;
   fvfsi::QuadraticFitData data; // the Poisson scene's: all boundary faces, weights (L/|s|)^6
   data.value_faces.assign(fv.faces.size(), false);
   for (unsigned int f = 0; f < fv.faces.size(); ++f)
@@ -145,14 +142,9 @@ void test(std::ostream& out, const std::string& generator, const std::string& ar
   const auto& faces = fv.faces;
   const QuadraticField<dim> field;
 
-  fvfsi::CellVector phi = fv.make_cell_vector();
-  for (unsigned int c = 0; c < fv.n_owned_cells(); ++c)
-    phi.local_element(c) = field(fv.centroid[c]);
-  phi.update_ghost_values();
-  fvfsi::FaceVector boundary(faces.size(), 0.0);
-  for (unsigned int f = 0; f < faces.size(); ++f)
-    if (faces[f].N == fvfsi::invalid_cell)
-      boundary[f] = field(faces[f].centre);
+  fvfsi::CellVector phi;
+  fvfsi::FaceVector boundary;
+  exact_values(fv, field, phi, boundary);
 
   fvfsi::CellGradient<dim> g(fv);
   fvfsi::CellHessian<dim> H(fv);
@@ -204,10 +196,5 @@ void test(std::ostream& out, const std::string& generator, const std::string& ar
 
 int main(int argc, char** argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out = open_output();
-  test<2>(out, "hyper_cube", "-0.5 : 1.5 : true", 4);
-  test<2>(out, "hyper_L", "-1 : 1 : false", 3);
-  test<3>(out, "hyper_cube", "-0.5 : 1.5 : true", 3);
-  test<3>(out, "hyper_L", "-1 : 1 : false", 2);
+  return exactness_main<test<2>, test<3>>(argc, argv);
 }

@@ -65,12 +65,9 @@ template <int dim>
 void test(std::ostream& out, const std::string& generator, const std::string& arguments,
           const unsigned int refinements, const unsigned int expected_vertices)
 {
-  out << "--- " << dim << "D " << generator << " (" << arguments << "), " << refinements
-      << " refinements, distortion 0.25" << std::endl;
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
-  make_test_mesh(tria, generator, arguments, refinements, 0.25);
-  const fvfsi::FVGeometry<dim> fv(tria);
+  const TestMesh<dim> mesh(out, generator, arguments, refinements);
+  const fvfsi::FVGeometry<dim>& fv = *mesh.fv;
   const fvfsi::VertexInterpolation<dim> interpolation(fv);
   const auto& x = fv.vertices();
 

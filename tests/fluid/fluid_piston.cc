@@ -27,15 +27,9 @@ std::array<double, 2> study(std::ofstream& out, const std::vector<std::string>& 
   out << "steps  max velocity error  order  max pressure error  order\n";
   for (const unsigned int n : {20u, 40u, 80u, 160u})
   {
-    std::vector<std::string> overrides = {"Time/Time step=" + format("%.17g", T / n),
-                                          "Output directory=out"};
-    overrides.insert(overrides.end(), extra.begin(), extra.end());
-    const auto p = shipped_case("ale_piston", overrides);
-    std::filesystem::create_directories("out");
-    fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, p->time, MPI_COMM_WORLD, ".", "out");
-    scene.run();
-    const std::array<double, 2> e = {scene.results().max_velocity_error,
-                                     scene.results().max_pressure_error};
+    const auto scene = run_fluid_case("ale_piston", T / n, extra);
+    const std::array<double, 2> e = {scene->results().max_velocity_error,
+                                     scene->results().max_pressure_error};
     out << format("%-5u  %.3e", n, e[0]);
     if (n > 20)
       for (unsigned int i = 0; i < 2; ++i)

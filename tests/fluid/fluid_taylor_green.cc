@@ -39,13 +39,8 @@ struct State
 
 State run(const unsigned int n_steps, const std::vector<std::string>& extra)
 {
-  std::vector<std::string> overrides = {"Time/Time step=" + format("%.17g", 1.0 / n_steps),
-                                        "Output directory=out"};
-  overrides.insert(overrides.end(), extra.begin(), extra.end());
-  const auto p = shipped_case("taylor_green", overrides);
-  std::filesystem::create_directories("out");
-  fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, p->time, MPI_COMM_WORLD, ".", "out");
-  scene.run();
+  const auto scene_pointer = run_fluid_case("taylor_green", 1.0 / n_steps, extra);
+  const auto& scene = *scene_pointer;
   const auto& fv = scene.geometry();
   State s;
   double mean = 0, total = 0;

@@ -21,6 +21,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include "../tutorial.h"
 #include <fvfsi/fv/boundary_conditions.h>
 #include <fvfsi/fv/gradients.h>
 #include <fvfsi/fv/laplacian.h>
@@ -360,12 +361,7 @@ void PoissonFV<dim>::run(const unsigned int n_cycles)
     table.set_precision(key, 3);
     table.evaluate_convergence_rates(key, "cells", ConvergenceTable::reduction_rate_log2, dim);
   }
-  if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
-  {
-    std::ofstream output("output"); // the file the test suite compares
-    table.write_text(std::cout);
-    table.write_text(output);
-  }
+  fvfsi_tutorial::write_table(table, mpi_communicator);
 }
 } // namespace Step1
 
@@ -374,16 +370,8 @@ void PoissonFV<dim>::run(const unsigned int n_cycles)
 // Errors end the program with a message.
 int main(int argc, char* argv[])
 {
-  try
-  {
-    dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  return fvfsi_tutorial::main_program(argc, argv, "step-1", [&]() {
     Step1::PoissonFV<2> problem;
     problem.run(argc > 1 ? std::stoi(argv[1]) : 3);
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "step-1: error: " << e.what() << std::endl;
-    return 1;
-  }
-  return 0;
+  });
 }

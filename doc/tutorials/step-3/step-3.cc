@@ -40,6 +40,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include "../tutorial.h"
 #include <fvfsi/fluid/fluid_parameters.h>
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/fv/boundary_conditions.h>
@@ -47,6 +48,7 @@
 #include <fvfsi/fv/face_matrix.h>
 #include <fvfsi/fv/ghost_faces.h>
 #include <fvfsi/fv/gradients.h>
+#include <fvfsi/fv/fv_operators.h>
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/linear_solver.h>
 #include <fvfsi/fv/vertex_interpolation.h>
@@ -134,9 +136,9 @@ private:
   ConditionalOStream pcout;
   parallel::distributed::Triangulation<dim> triangulation;
   std::unique_ptr<FVGeometry<dim>> fv;
-  std::unique_ptr<VertexInterpolation<dim>> vertex_interpolation;
-  std::unique_ptr<GaussGreenGradient<dim>> gauss_green;
-  std::unique_ptr<Laplacian<dim>> laplacian;
+  // step-1's and step-2's pieces (vertex values, Gauss-Green gradient, Laplacian), as the library
+  // bundles them.
+  std::unique_ptr<FVOperators<dim>> operators;
 
   ScalarBoundaryConditions<dim> velocity_bc, pressure_bc;
   FaceVector nu_f; // Gamma_f of the viscous Laplacian
@@ -205,15 +207,13 @@ void CylinderFlow::make_grid()
 // residual reduction: its right-hand side is lagged anyway.
 void CylinderFlow::setup_system()
 {
-  vertex_interpolation = std::make_unique<VertexInterpolation<dim>>(*fv);
-  gauss_green = std::make_unique<GaussGreenGradient<dim>>(*fv);
-  laplacian = std::make_unique<Laplacian<dim>>(*fv);
+  operators = std::make_unique<FVOperators<dim>>(*fv);
   momentum = std::make_unique<FaceMatrix<dim>>(*fv);
   pressure_equation = std::make_unique<FaceMatrix<dim>>(*fv);
   momentum->reinit();
   pressure_equation->reinit();
-  laplacian->reinit_matrix(momentum_matrix);
-  laplacian->reinit_matrix(pressure_matrix);
+  operators->laplacian.reinit_matrix(momentum_matrix);
+  operators->laplacian.reinit_matrix(pressure_matrix);
 
   for (const unsigned int patch : {inlet, outlet, walls, cylinder, flag})
   {
@@ -303,8 +303,7 @@ void CylinderFlow::update_velocity_gradients()
   {
     for (unsigned int f = 0; f < fv->faces.size(); ++f)
       values[f] = boundary_u[f][j];
-    vertex_interpolation->interpolate(u.components[j], values, vertex_u[j]);
-    gauss_green->compute(vertex_u[j], grad_u[j]);
+    operators->gradient(u.components[j], values, vertex_u[j], grad_u[j]);
   }
 }
 
@@ -322,8 +321,7 @@ void CylinderFlow::update_pressure_boundary_values()
 
 void CylinderFlow::update_pressure_gradient()
 {
-  vertex_interpolation->interpolate(p, boundary_p, vertex_p);
-  gauss_green->compute(vertex_p, grad_p);
+  operators->gradient(p, boundary_p, vertex_p, grad_p);
 }
 
 // @sect4{CylinderFlow::assemble_momentum}
@@ -410,7 +408,7 @@ void CylinderFlow::assemble_momentum()
     }
   }
   for (unsigned int j = 0; j < dim; ++j)
-    laplacian->add_correction(nu_f, velocity_bc, grad_u[j], B_rest[j]);
+    operators->laplacian.add_correction(nu_f, velocity_bc, grad_u[j], B_rest[j]);
 
   double c0, c1, c2;
   time_coefficients(c0, c1, c2);
@@ -653,7 +651,7 @@ void CylinderFlow::solve_pressure()
       if (face.N == invalid_cell && face.patch == outlet)
         pressure_rhs.local_element(face.P) += gamma_p[f] * face.area / face.d_n * boundary_p[f];
     }
-    laplacian->add_correction(gamma_p, pressure_bc, grad_p, pressure_rhs);
+    operators->laplacian.add_correction(gamma_p, pressure_bc, grad_p, pressure_rhs);
     pressure_solver->solve(pressure_matrix, p, pressure_rhs, "pressure");
     if (k < 2)
     {
@@ -676,7 +674,7 @@ void CylinderFlow::correct_fluxes_and_velocity()
     if (fv->faces[f].kind != FaceKind::ghost_boundary)
       F[f] = gamma_p[f] == 0 ? F_star[f]
                              : F_star[f] - gamma_p[f] * fv->faces[f].area *
-                                               laplacian->normal_gradient(f, p, grad_p, pressure_bc);
+                                               operators->laplacian.normal_gradient(f, p, grad_p, pressure_bc);
   update_pressure_boundary_values();
   update_pressure_gradient();
   for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
@@ -823,7 +821,7 @@ void CylinderFlow::run(const unsigned int n_time_steps, const unsigned int inter
 // @sect3{The same case with fvfsi::FluidSolver}
 // The library solver on the same mesh, with the parameters a .prm file would set (as in
 // prm/turek_hron_cfd2.prm and turek_hron_cfd3.prm, with this program's U). Its solve_time_step()
-// is solve_time_step() above (source/fluid/fluid_solver.cc, source/fluid/fluid_piso.cc: the same
+// is solve_time_step() above (source/fluid/fluid_solver.cc, source/fluid/fluid_piso.templates.h: the same
 // steps by the same names), plus what this case does not need (symmetry planes, moving meshes,
 // outer correctors, 3D). Steady (dt = 0): returns the converged force and sets n_steps.
 // Transient: n_steps time steps, the force every `interval` steps into `history`.
@@ -973,15 +971,5 @@ void run(const unsigned int n)
 
 int main(int argc, char* argv[])
 {
-  try
-  {
-    dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-    Step3::run(8);
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "step-3: error: " << e.what() << std::endl;
-    return 1;
-  }
-  return 0;
+  return fvfsi_tutorial::main_program(argc, argv, "step-3", []() { Step3::run(8); });
 }

@@ -31,6 +31,7 @@
 #include <fvfsi/base/time_control.h>
 #include <fvfsi/fv/cell_fields.h>
 #include <fvfsi/fv/gradients.h>
+#include <fvfsi/fv/fv_operators.h>
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/linear_solver.h>
 #include <fvfsi/fv/vertex_interpolation.h>
@@ -127,9 +128,7 @@ namespace fvfsi
     };
     std::vector<MovingPatch> moving;
     MovingPatch& moving_patch(const std::string& name);
-    Laplacian<dim> laplacian;
-    VertexInterpolation<dim> vertex_interpolation;
-    GaussGreenGradient<dim> gauss_green;
+    FVOperators<dim> operators; ///< on the reference mesh
     LinearSolver solver;
     dealii::TrilinosWrappers::SparseMatrix matrix;
     CellVector rhs_boundary; ///< the Dirichlet sources of the assembled matrix, per unit value

@@ -17,6 +17,29 @@
 
 namespace fvfsi
 {
+  /// The life cycle every solver of a scene has (the fluid, the solid): the scene advances the
+  /// clock, then calls begin_time_step(), solve_current_step() (repeatable: a coupling solves the
+  /// step again with new data from the other side), end_time_step(). A coupling loop calls the
+  /// solvers through this interface alone.
+  class TimeSteppingSolver
+  {
+  public:
+    virtual ~TimeSteppingSolver() = default;
+    /// Move to the clock's time level.
+    virtual void begin_time_step() = 0;
+    /// Solve the current time level (again).
+    virtual void solve_current_step() = 0;
+    /// Accept the solution of the time level.
+    virtual void end_time_step() = 0;
+    /// The three in a row, for a scene that solves each step once.
+    void solve_time_step()
+    {
+      begin_time_step();
+      solve_current_step();
+      end_time_step();
+    }
+  };
+
   /// `subsection Time` of a .prm file.
   struct TimeParameters
   {

@@ -24,11 +24,17 @@
 #include <fvfsi/fv/least_squares_model.h>
 
 #include <string>
+#include <vector>
 
 namespace fvfsi
 {
+  /// `subsection Coupling`: the interface and how its displacement is iterated.
   struct CouplingParameters
   {
+    /// Fluid patches of the interface (walls that are also Mesh motion/Moving patches).
+    std::vector<std::string> fluid_interface;
+    /// Solid patches of the interface (Solid/External traction patches).
+    std::vector<std::string> solid_interface;
     enum class Method
     {
       fixed,  ///< fixed relaxation (Eq. 31)

@@ -77,6 +77,7 @@
 #include <fvfsi/fv/boundary_conditions.h>
 #include <fvfsi/fv/cell_fields.h>
 #include <fvfsi/fv/face_matrix.h>
+#include <fvfsi/fv/fv_operators.h>
 #include <fvfsi/fv/gradients.h>
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/linear_solver.h>
@@ -92,7 +93,7 @@
 namespace fvfsi
 {
   template <int dim>
-  class FluidSolver
+  class FluidSolver : public TimeSteppingSolver
   {
   public:
     /// `clock` is the scene's, read at every time step (steady runs ignore it).
@@ -101,16 +102,16 @@ namespace fvfsi
 
     /// Move to the clock's time level: boundary and body-force expressions at t, the state to
     /// start from (transient: extrapolated from the last two steps).
-    void begin_time_step();
+    void begin_time_step() override;
     /// Transient: one PISO step from the step's start state (a repeated call, after another
     /// move_mesh(), starts from the same state). Steady: pseudo time steps until the relative
     /// change is below the steady tolerance, from the current state. Throws std::runtime_error
     /// naming the time step and the field if a value becomes non-finite.
-    void solve_current_step();
-    /// Accept the step; returns its relative change dt max|du/dt| / max|u|.
-    double end_time_step();
-    /// begin_time_step(), solve_current_step(), end_time_step().
-    double solve_time_step();
+    void solve_current_step() override;
+    /// Accept the step (relative_change() tells by how much it changed u).
+    void end_time_step() override;
+    /// max|u^(n+1) - u^n| / max|u^(n+1)| of the last accepted step.
+    double relative_change() const { return last_change; }
 
     /// The driver has moved the mesh for the coming time step (FVGeometry::reinit) and passes
     /// the volumes the faces swept, FVGeometry::swept_volumes() of that motion [m^dim]. The next
@@ -208,9 +209,7 @@ namespace fvfsi
     const TimeControl& clock;
     dealii::ConditionalOStream pcout;
     dealii::TimerOutput timer_output;
-    VertexInterpolation<dim> vertex_interpolation;
-    GaussGreenGradient<dim> gauss_green;
-    Laplacian<dim> laplacian;
+    FVOperators<dim> operators; ///< vertex values, Gauss-Green gradient, Laplacian
 
     FaceConditions<dim, Type> conditions; ///< per boundary face
     dealii::FunctionParser<dim> body_force;
@@ -233,6 +232,7 @@ namespace fvfsi
     std::vector<dealii::Tensor<1, dim>> S_old, S_old2;
     std::vector<dealii::Point<dim>> r_f_old, r_f_old2;
     unsigned int pseudo_step = 0; ///< steady: pseudo time steps so far
+    double last_change = 0;       ///< relative_change()
     // The state a time step starts from (after extrapolation), for repeated solves of the step.
     CellVectorField<dim> u_start;
     CellVector p_start;

@@ -4,6 +4,7 @@
 // reached (fluid_history.txt, solid_history.txt, fsi_history.txt).
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/tensor.h>
 
 #include <fstream>
 #include <string>
@@ -11,6 +12,26 @@
 
 namespace fvfsi
 {
+  /// `<base>x<suffix>`, `<base>y<suffix>`[, `<base>z<suffix>`]: the column names of a vector
+  /// (e.g. ux_A, uy_A for the displacement at probe A).
+  template <int dim>
+  std::vector<std::string> vector_columns(const std::string& base, const std::string& suffix)
+  {
+    const char* axis[] = {"x", "y", "z"};
+    std::vector<std::string> columns;
+    for (unsigned int d = 0; d < dim; ++d)
+      columns.push_back(base + axis[d] + suffix);
+    return columns;
+  }
+
+  /// Append the components of a tensor to a history line.
+  template <int dim>
+  void append(std::vector<double>& line, const dealii::Tensor<1, dim>& x)
+  {
+    for (unsigned int d = 0; d < dim; ++d)
+      line.push_back(x[d]);
+  }
+
   class HistoryFile
   {
   public:

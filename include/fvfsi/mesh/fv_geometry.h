@@ -27,6 +27,17 @@ namespace fvfsi
   /// Marks "no cell" (the missing neighbour of a boundary face).
   constexpr unsigned int invalid_cell = static_cast<unsigned int>(-1);
 
+  /// A point's coordinates as a map key: the exact bits of the doubles, which every rank computes
+  /// identically for the same vertex (interface zones, parallel-consistency tests).
+  template <int dim>
+  std::array<double, dim> point_key(const dealii::Point<dim>& x)
+  {
+    std::array<double, dim> key;
+    for (unsigned int d = 0; d < dim; ++d)
+      key[d] = x[d];
+    return key;
+  }
+
   /// Which cells a face separates, and so who assembles it.
   enum class FaceKind : unsigned char
   {
@@ -123,6 +134,10 @@ namespace fvfsi
     }
     /// Local face indices of cell c (owned cells: all faces; ghost cells: their boundary faces).
     const std::vector<unsigned int>& cell_faces(unsigned int c) const { return faces_of_cell[c]; }
+    /// The faces of kind `boundary` (domain-boundary faces of owned cells).
+    const std::vector<unsigned int>& boundary_faces() const { return boundary_face_list; }
+    /// The faces of kinds `boundary` and `ghost_boundary`.
+    const std::vector<unsigned int>& all_boundary_faces() const { return all_boundary_face_list; }
 
     std::vector<dealii::Point<dim>> centroid; ///< r_P [m]
     std::vector<double> cell_volume;          ///< V_P [m^dim] (area in 2D: true 2D, unit depth)
@@ -145,6 +160,7 @@ namespace fvfsi
     std::vector<std::array<unsigned int, dealii::GeometryInfo<dim>::vertices_per_cell>>
       cell_vertex_indices;
     std::vector<std::vector<unsigned int>> faces_of_cell;
+    std::vector<unsigned int> boundary_face_list, all_boundary_face_list;
     /// Per cell and face: the face's vertices, counter-clockwise about the outward normal.
     std::vector<std::array<std::array<unsigned int, dealii::GeometryInfo<dim>::vertices_per_face>,
                            dealii::GeometryInfo<dim>::faces_per_cell>>

@@ -88,7 +88,6 @@ namespace fvfsi
     void move_mesh();
     void record_time_history();
     void compute_errors();
-    void output_results() const;
 
     FluidParameters fluid_parameters;
     FluidSceneParameters scene_parameters;

@@ -42,15 +42,12 @@
 
 namespace fvfsi
 {
+  /// The FSI scene's own parameters: the coupling (`subsection Coupling`: interface patches and
+  /// iteration).
   struct FsiSceneParameters
   {
-    /// Fluid patches of the interface (walls that are also Mesh motion/Moving patches).
-    std::vector<std::string> fluid_interface;
-    /// Solid patches of the interface (Solid/External traction patches).
-    std::vector<std::string> solid_interface;
     CouplingParameters coupling;
-
-    void declare(dealii::ParameterHandler& prm);
+    void declare(dealii::ParameterHandler& prm) { coupling.declare(prm); }
   };
 
   struct FsiResults

@@ -8,6 +8,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/distributed/tria.h>
 
+#include <fvfsi/base/parsed_function.h>
 #include <fvfsi/base/time_control.h>
 #include <fvfsi/fv/point_probes.h>
 #include <fvfsi/io/history_file.h>
@@ -15,6 +16,7 @@
 #include <fvfsi/mesh/fv_geometry.h>
 #include <fvfsi/mesh/mesh_parameters.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -39,6 +41,12 @@ namespace fvfsi
                          const std::string& force);
   };
 
+  /// Max and L2 norms of a cell error, max_P |e_P| and sqrt(sum_P V_P e_P^2).
+  struct CellErrors
+  {
+    double max = 0, l2 = 0;
+  };
+
   template <int dim>
   class SingleMeshScene
   {
@@ -57,12 +65,25 @@ namespace fvfsi
     void make_mesh_and_writer(const std::string& output_name);
     /// Create `<output directory>/<file_name>` with the given columns.
     void open_history(const std::string& file_name, const std::vector<std::string>& columns);
-    /// `<base>x<suffix>`, `<base>y<suffix>`[, `<base>z<suffix>`]: the names of a vector's
-    /// columns (e.g. ux_A, uy_A).
-    static std::vector<std::string> vector_columns(const std::string& base, const std::string& suffix);
     /// True if a progress line or VTU output is due after time step `step` of `n_steps`.
     bool progress_due(unsigned int step, unsigned int n_steps) const;
     bool output_due(unsigned int step) const;
+    /// The errors e = value(c, k) - exact_k(r_P, t) over the owned cells and the n_components
+    /// components k of the expression `exact` (`parameter` names it in messages), collective.
+    /// With `up_to_a_constant` the volume mean of e is subtracted first (a pressure without a
+    /// level).
+    template <typename Value>
+    CellErrors cell_errors(const std::string& exact, const std::string& parameter,
+                           unsigned int n_components, const Value& value,
+                           bool up_to_a_constant = false) const;
+    /// Write the output fields of `solver` (its add_output_fields()) as the clock's step.
+    template <typename Solver>
+    void write_output(const Solver& solver) const
+    {
+      OutputFields<dim> fields(*fv);
+      solver.add_output_fields(fields);
+      vtu_output->write(fields, clock.step(), clock.time());
+    }
 
     MPI_Comm comm;
     MeshParameters mesh_parameters;
@@ -76,4 +97,38 @@ namespace fvfsi
     std::unique_ptr<VtuOutput<dim>> vtu_output;
     std::unique_ptr<HistoryFile> history;
   };
+
+  template <int dim>
+  template <typename Value>
+  CellErrors SingleMeshScene<dim>::cell_errors(const std::string& exact, const std::string& parameter,
+                                               const unsigned int n_components, const Value& value,
+                                               const bool up_to_a_constant) const
+  {
+    dealii::FunctionParser<dim> f(n_components);
+    initialize_function(f, exact, parameter);
+    f.set_time(clock.time());
+    double offset = 0;
+    if (up_to_a_constant)
+    {
+      double volume = 0;
+      for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
+        for (unsigned int k = 0; k < n_components; ++k)
+        {
+          offset += fv->cell_volume[c] * (value(c, k) - f.value(fv->centroid[c], k));
+          volume += fv->cell_volume[c];
+        }
+      offset = dealii::Utilities::MPI::sum(offset, comm) / dealii::Utilities::MPI::sum(volume, comm);
+    }
+    CellErrors e;
+    for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
+      for (unsigned int k = 0; k < n_components; ++k)
+      {
+        const double error = value(c, k) - offset - f.value(fv->centroid[c], k);
+        e.max = std::max(e.max, std::abs(error));
+        e.l2 += fv->cell_volume[c] * error * error;
+      }
+    e.max = dealii::Utilities::MPI::max(e.max, comm);
+    e.l2 = std::sqrt(dealii::Utilities::MPI::sum(e.l2, comm));
+    return e;
+  }
 } // namespace fvfsi

@@ -63,7 +63,6 @@ namespace fvfsi
     void record_time_history();
     /// The displacement at probe i [m] (collective).
     dealii::Tensor<1, dim> probe_displacement(unsigned int i) const;
-    void output_results() const;
 
     SolidParameters solid_parameters;
     SolidSceneParameters scene_parameters;

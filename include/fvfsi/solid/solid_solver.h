@@ -15,7 +15,7 @@
 // and the boundary values extrapolated at traction and symmetry faces also carry their
 // second-order Taylor terms, with per-cell Hessians (QuadraticFit): without them the max
 // displacement error converges like h^2 log(1/h) where two traction boundaries meet (see
-// solid_gradients.cc).
+// solid_gradients.templates.h).
 //
 // The solver knows nothing about coupling: an external traction per boundary face can be set
 // (set_external_traction) and the displacement read (displacement, boundary_displacement). It
@@ -24,8 +24,8 @@
 // new external tractions), end_time_step().
 //
 // The code is in three files: solid_solver.cc (set-up, time steps, outer iterations),
-// solid_face_forces.cc (face gradients, boundary values, tractions, the residual) and
-// solid_gradients.cc (the sweeps of boundary values, vertex values and gradients; the Hessian
+// solid_face_forces.templates.h (face gradients, boundary values, tractions, the residual) and
+// solid_gradients.templates.h (the sweeps of boundary values, vertex values and gradients; the Hessian
 // correction).
 
 #include <deal.II/base/conditional_ostream.h>
@@ -41,6 +41,7 @@
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/least_squares_model.h>
 #include <fvfsi/fv/linear_solver.h>
+#include <fvfsi/fv/point_probes.h>
 #include <fvfsi/fv/quadratic_fit.h>
 #include <fvfsi/fv/vertex_interpolation.h>
 #include <fvfsi/io/vtu_output.h>
@@ -57,7 +58,7 @@
 namespace fvfsi
 {
   template <int dim>
-  class SolidSolver
+  class SolidSolver : public TimeSteppingSolver
   {
   public:
     /// `clock` is the scene's (a steady solid reads only its time, for the loads).
@@ -66,16 +67,17 @@ namespace fvfsi
 
     /// Move to the clock's time level: loads and boundary values at t, the matrices for its
     /// time step.
-    void begin_time_step();
+    void begin_time_step() override;
     /// Outer iterations from the current iterate until the relative change is below the outer
-    /// tolerance; returns their number. Repeatable (a coupling calls it again with new external
-    /// tractions: each call starts from the last solution). Throws std::runtime_error naming the
-    /// time step if the iterations diverge (non-finite values) or exceed the limit.
-    unsigned int solve_current_step();
+    /// tolerance (outer_iterations() tells how many). Repeatable (a coupling calls it again with
+    /// new external tractions: each call starts from the last solution). Throws
+    /// std::runtime_error naming the time step if the iterations diverge (non-finite values) or
+    /// exceed the limit.
+    void solve_current_step() override;
     /// Accept the step (transient: shift the time levels of u and v).
-    void end_time_step();
-    /// begin_time_step(), solve_current_step(), end_time_step(); returns the outer iterations.
-    unsigned int solve_time_step();
+    void end_time_step() override;
+    /// Outer iterations of the last solve_current_step().
+    unsigned int outer_iterations() const { return last_outer_iterations; }
 
     const LameParameters& material() const { return lame; }
 
@@ -90,6 +92,9 @@ namespace fvfsi
     /// Cauchy stress at cell c and at face f [Pa].
     dealii::Tensor<2, dim> cell_stress(unsigned int c) const;
     dealii::Tensor<2, dim> face_stress(unsigned int f) const;
+    /// The displacement [m] at probe point i: the linear reconstruction u_P + (x - r_P) . grad u
+    /// in the cell that holds it (collective).
+    dealii::Tensor<1, dim> probe_displacement(const PointProbes<dim>& probes, unsigned int i) const;
     /// Total force on a patch, sum over its faces of n.(Sigma.F^T) S_f [N] (2D: per unit depth).
     dealii::Tensor<1, dim> patch_force(unsigned int patch) const;
 
@@ -138,8 +143,6 @@ namespace fvfsi
     Laplacian<dim> laplacian;
 
     FaceConditions<dim, SolidBoundaryCondition::Type> conditions; ///< per boundary face
-    std::vector<unsigned int> boundary_faces;  ///< the faces of kind `boundary`
-    std::vector<unsigned int> all_boundary_faces; ///< kinds `boundary` and `ghost_boundary`
     /// The traction (pressure: entry 0) expressions at the face centres at the current time, per
     /// face of a traction or pressure patch (evaluated once per time step, not per sweep).
     std::vector<dealii::Tensor<1, dim>> given_traction;
@@ -151,6 +154,7 @@ namespace fvfsi
     std::array<dealii::TrilinosWrappers::SparseMatrix, dim> matrix;
     std::array<std::unique_ptr<LinearSolver>, dim> linear_solver;
     double assembled_mass_coefficient = -1;
+    unsigned int last_outer_iterations = 0;
     /// Anderson acceleration of the outer iterations: the least-squares model of the residual
     /// f = du over the iterates' images g = u + du (depth: Solid/Outer acceleration depth).
     LeastSquaresModel<BlockVector> acceleration;

@@ -1,3 +1,4 @@
+#pragma once
 // The steps of one PISO time step of the FluidSolver (see fluid_solver.h for the equations):
 // momentum assembly and predictor, the pressure equation from continuity with the consistent
 // Rhie-Chow flux, and the flux and velocity corrections.
@@ -51,7 +52,7 @@ namespace fvfsi
     }
     // Explicit non-orthogonal part of Eq. 19 for the viscous term.
     for (unsigned int j = 0; j < dim; ++j)
-      laplacian.add_correction(nu_f, velocity_bc, grad_u[j], B_rest[j]);
+      operators.laplacian.add_correction(nu_f, velocity_bc, grad_u[j], B_rest[j]);
     add_time_and_body_force_terms();
   }
 
@@ -294,7 +295,7 @@ namespace fvfsi
     control.update_after_last = false;
     solve_deferred_correction(
       control, pressure_solver, pressure_matrix, pressure_rhs, p,
-      [this](CellVector& rhs) { laplacian.add_correction(gamma_p, pressure_bc, grad_p, rhs); },
+      [this](CellVector& rhs) { operators.laplacian.add_correction(gamma_p, pressure_bc, grad_p, rhs); },
       [this]() {
         update_pressure_boundary_values();
         update_pressure_gradient();
@@ -315,7 +316,7 @@ namespace fvfsi
         F[f] = F_star[f];
       else
         F[f] = F_star[f] -
-               gamma_p[f] * face.area * laplacian.normal_gradient(f, p, grad_p, pressure_bc);
+               gamma_p[f] * face.area * operators.laplacian.normal_gradient(f, p, grad_p, pressure_bc);
     }
   }
 
@@ -336,18 +337,4 @@ namespace fvfsi
   }
 
   // The members above are defined in this file; instantiate them here.
-#define FVFSI_INSTANTIATE(dim)                                                                    \
-  template void FluidSolver<dim>::assemble_momentum();                                            \
-  template void FluidSolver<dim>::add_boundary_face_momentum(unsigned int, double);               \
-  template void FluidSolver<dim>::add_time_and_body_force_terms();                                \
-  template void FluidSolver<dim>::add_convection_correction(unsigned int, double);               \
-  template void FluidSolver<dim>::solve_momentum();                                               \
-  template void FluidSolver<dim>::assemble_pressure_matrix();                                     \
-  template void FluidSolver<dim>::compute_predicted_fluxes();                                     \
-  template void FluidSolver<dim>::solve_pressure();                                               \
-  template void FluidSolver<dim>::correct_fluxes();                                               \
-  template void FluidSolver<dim>::correct_velocity();
-  FVFSI_INSTANTIATE(2)
-  FVFSI_INSTANTIATE(3)
-#undef FVFSI_INSTANTIATE
 } // namespace fvfsi

@@ -1,3 +1,4 @@
+#pragma once
 // The SolidSolver's gradients: the sweeps of boundary values, vertex values and cell gradients of
 // an outer iteration, the vertex constraints, and the Hessian correction (see solid_solver.h).
 #include <deal.II/base/mpi.h>
@@ -24,7 +25,7 @@ void SolidSolver<dim>::update_gradients()
     update_boundary_values();
     for (unsigned int j = 0; j < dim; ++j)
     {
-      for (const unsigned int f : all_boundary_faces)
+      for (const unsigned int f : geometry.all_boundary_faces())
         boundary_values[f] = boundary_u[f][j];
       const CellVector& u_j = u.components[j];
       if (parameters.variant == Variant::present)
@@ -92,13 +93,13 @@ void SolidSolver<dim>::update_gradients()
 template <int dim>
 void SolidSolver<dim>::update_hessians()
 {
-  for (const unsigned int f : boundary_faces)
+  for (const unsigned int f : geometry.boundary_faces())
     if (takes_traction(conditions.type(f)))
       boundary_g_n[f] = geometry.faces[f].n * boundary_G[f];
   cell_hessian->compute(u, boundary_u, boundary_g_n, hessian);
   // 1/2 (k_P.H.k_P - d_n^2 n.H.n) per extrapolated boundary face, and the vertex fit's terms:
   // fixed while the sweeps iterate the boundary and vertex values for this u.
-  for (const unsigned int f : boundary_faces)
+  for (const unsigned int f : geometry.boundary_faces())
   {
     const auto& face = geometry.faces[f];
     if (conditions.type(f) == Type::fixed_displacement)
@@ -160,12 +161,4 @@ void SolidSolver<dim>::find_constrained_vertices()
   }
 }
 
-#define FVFSI_INSTANTIATE(dim)                                                                     \
-  template void SolidSolver<dim>::update_gradients();                                              \
-  template void SolidSolver<dim>::update_hessians();                                               \
-  template void SolidSolver<dim>::impose_vertex_constraints();                                     \
-  template void SolidSolver<dim>::find_constrained_vertices();
-FVFSI_INSTANTIATE(2)
-FVFSI_INSTANTIATE(3)
-#undef FVFSI_INSTANTIATE
 } // namespace fvfsi

@@ -1,3 +1,4 @@
+#pragma once
 // The SolidSolver's face forces: the face gradient of each variant, the boundary values of
 // Eqs 23-24, the tractions of the boundary conditions and the residual of Eq. 16 (see
 // solid_solver.h).
@@ -66,7 +67,7 @@ template <int dim>
 void SolidSolver<dim>::evaluate_given_tractions()
 {
   given_traction.resize(geometry.faces.size());
-  for (const unsigned int f : boundary_faces)
+  for (const unsigned int f : geometry.boundary_faces())
   {
     const Type type = conditions.type(f);
     if (type == Type::pressure)
@@ -80,7 +81,7 @@ void SolidSolver<dim>::evaluate_given_tractions()
 template <int dim>
 void SolidSolver<dim>::update_boundary_values()
 {
-  for (const unsigned int f : boundary_faces)
+  for (const unsigned int f : geometry.boundary_faces())
   {
     const auto& face = geometry.faces[f];
     const Type type = conditions.type(f);
@@ -205,16 +206,4 @@ Tensor<1, dim> SolidSolver<dim>::patch_force(const unsigned int patch) const
   return Utilities::MPI::sum(force, geometry.comm());
 }
 
-#define FVFSI_INSTANTIATE(dim)                                                                     \
-  template Tensor<2, dim> SolidSolver<dim>::face_gradient(unsigned int) const;                     \
-  template Tensor<1, dim> SolidSolver<dim>::boundary_traction(unsigned int, const Tensor<2, dim>&) \
-    const;                                                                                         \
-  template void SolidSolver<dim>::evaluate_given_tractions();                                      \
-  template void SolidSolver<dim>::update_boundary_values();                                        \
-  template Tensor<1, dim> SolidSolver<dim>::face_force_density(unsigned int) const;                \
-  template void SolidSolver<dim>::compute_residual(std::array<CellVector, dim>&) const;            \
-  template Tensor<1, dim> SolidSolver<dim>::patch_force(unsigned int) const;
-FVFSI_INSTANTIATE(2)
-FVFSI_INSTANTIATE(3)
-#undef FVFSI_INSTANTIATE
 } // namespace fvfsi
