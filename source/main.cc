@@ -8,5 +8,6 @@
 int main(int argc, char** argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  return fvfsi::run_application(std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
+  return fvfsi::run_application(std::vector<std::string>(argv + 1, argv + argc), std::cout,
+                                std::cerr);
 }

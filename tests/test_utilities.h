@@ -23,7 +23,10 @@ namespace fvfsi_test
     return out;
   }
 
-  inline std::string yes_no(const bool b) { return b ? "yes" : "NO"; }
+  inline std::string yes_no(const bool b)
+  {
+    return b ? "yes" : "NO";
+  }
 
   /// printf-style formatting into a std::string.
   template <typename... Args>
@@ -57,8 +60,8 @@ namespace fvfsi_test
 namespace fvfsi_test
 {
   /// The parameters of a shipped .prm file (prm/NAME.prm) with overrides, as fvfsi would read them.
-  inline std::unique_ptr<fvfsi::AllParameters> shipped_case(const std::string& name,
-                                                            const std::vector<std::string>& overrides)
+  inline std::unique_ptr<fvfsi::AllParameters>
+  shipped_case(const std::string& name, const std::vector<std::string>& overrides)
   {
     auto p = std::make_unique<fvfsi::AllParameters>();
     fvfsi::read_parameters(*p, std::string(FVFSI_SOURCE_DIR) + "/prm/" + name + ".prm", overrides);
@@ -72,8 +75,8 @@ namespace fvfsi_test
 {
   /// The fluid scene of prm/NAME.prm with Time/Time step = dt and the `extra` overrides, run
   /// (writing to out/).
-  inline std::unique_ptr<fvfsi::FluidScene<2>> run_fluid_case(const std::string& name, const double dt,
-                                                             const std::vector<std::string>& extra)
+  inline std::unique_ptr<fvfsi::FluidScene<2>>
+  run_fluid_case(const std::string& name, const double dt, const std::vector<std::string>& extra)
   {
     std::vector<std::string> overrides = {"Time/Time step=" + format("%.17g", dt),
                                           "Output directory=out"};

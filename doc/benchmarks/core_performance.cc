@@ -131,8 +131,8 @@ Time now()
   timespec ts;
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
   return {
-      std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(),
-      ts.tv_sec + 1e-9 * ts.tv_nsec};
+    std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(),
+    ts.tv_sec + 1e-9 * ts.tv_nsec};
 }
 
 double median(std::vector<double> v)
@@ -207,8 +207,8 @@ private:
 
 /// Time `f` `repeats` times; `before` (untimed) runs before every sample.
 std::vector<Time> sample(
-    const unsigned int repeats, const std::function<void()>& f,
-    const std::function<void()>& before = [] {})
+  const unsigned int repeats, const std::function<void()>& f,
+  const std::function<void()>& before = [] {})
 {
   std::vector<Time> t;
   for (unsigned int r = 0; r < repeats; ++r)
@@ -313,7 +313,7 @@ void run(const Options& o, Report& report)
                                           IndexSet relevant;
                                           DoFTools::extract_locally_relevant_dofs(dofs, relevant);
                                           Utilities::MPI::Partitioner partitioner(
-                                              dofs.locally_owned_dofs(), relevant, comm);
+                                            dofs.locally_owned_dofs(), relevant, comm);
                                         }));
 
   // ---- FVGeometry construction (and the heap memory it holds) ----
@@ -386,7 +386,7 @@ void run(const Options& o, Report& report)
   h0 = heap();
   report.timing("matrix_sparsity",
                 sample(
-                    o.repeats, [&] { laplacian.reinit_matrix(matrix); }, [&] { matrix.clear(); }));
+                  o.repeats, [&] { laplacian.reinit_matrix(matrix); }, [&] { matrix.clear(); }));
   report.value("mem_matrix_heap", heap() - h0);
   report.value("mem_matrix_consumption", matrix.memory_consumption());
   report.value("matrix_nnz", matrix.n_nonzero_elements());
@@ -394,19 +394,19 @@ void run(const Options& o, Report& report)
   CellVector rhs_fixed = fv->make_cell_vector(), rhs = fv->make_cell_vector(),
              phi = fv->make_cell_vector();
   report.timing("assemble", sample(
-                                o.repeats,
-                                [&]
-                                {
-                                  laplacian.assemble(gamma, bc, matrix, rhs_fixed);
-                                  matrix.compress(VectorOperation::add);
-                                },
-                                [&]
-                                {
-                                  matrix = 0;
-                                  for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
-                                    rhs_fixed.local_element(c) =
-                                        source(fv->centroid[c]) * fv->cell_volume[c];
-                                }));
+                              o.repeats,
+                              [&]
+                              {
+                                laplacian.assemble(gamma, bc, matrix, rhs_fixed);
+                                matrix.compress(VectorOperation::add);
+                              },
+                              [&]
+                              {
+                                matrix = 0;
+                                for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
+                                  rhs_fixed.local_element(c) =
+                                    source(fv->centroid[c]) * fv->cell_volume[c];
+                              }));
 
   // ---- linear solve: CG + AMG, reduction 1e-6, from zero; setup and solve separately ----
   LinearSolverParameters sp;
@@ -493,13 +493,13 @@ void run(const Options& o, Report& report)
     v.trilinos_vector()[0][i] = std::sin(1.0 + i);
   matrix.vmult(Av, v);
   report.timing("assemble_rowwise", sample(
-                                        o.repeats,
-                                        [&]
-                                        {
-                                          assemble_rowwise(*fv, gamma, bc, matrix, rhs);
-                                          matrix.compress(VectorOperation::add);
-                                        },
-                                        [&] { matrix = 0; }));
+                                      o.repeats,
+                                      [&]
+                                      {
+                                        assemble_rowwise(*fv, gamma, bc, matrix, rhs);
+                                        matrix.compress(VectorOperation::add);
+                                      },
+                                      [&] { matrix = 0; }));
   matrix.vmult(Av2, v);
   Av2 -= Av;
   report.value("assemble_rowwise_relative_difference", Av2.l2_norm() / Av.l2_norm());

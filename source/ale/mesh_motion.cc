@@ -37,9 +37,10 @@ namespace fvfsi
                   "none: a fixed mesh; prescribed: every vertex moves by `Displacement`; "
                   "Laplace: the `Moving patches` move as given, the other boundaries are fixed, "
                   "the interior follows a Laplace equation with variable diffusivity.");
-    prm.add_parameter("Displacement", displacement,
-                      "prescribed: d(X, t) [m] of a vertex at reference position X, dim expressions "
-                      "of x, y[, z], t separated by `;`.");
+    prm.add_parameter(
+      "Displacement", displacement,
+      "prescribed: d(X, t) [m] of a vertex at reference position X, dim expressions "
+      "of x, y[, z], t separated by `;`.");
     prm.add_parameter("Moving patches", moving_patches,
                       "Laplace: `patch: expressions | patch: expressions`, d(X, t) [m] of the "
                       "vertices of each moving patch (dim expressions of x, y[, z], t separated by "
@@ -61,14 +62,11 @@ namespace fvfsi
   }
 
   template <int dim>
-  MeshMotion<dim>::MeshMotion(const FVGeometry<dim>& reference, const MeshParameters& mesh_parameters,
+  MeshMotion<dim>::MeshMotion(const FVGeometry<dim>& reference,
+                              const MeshParameters& mesh_parameters,
                               const MeshMotionParameters& parameters, const TimeControl& clock)
-    : reference(reference)
-    , prm(parameters)
-    , clock(clock)
-    , operators(reference)
-    , solver(parameters.solver)
-    , vertex_dofs(reference.triangulation())
+      : reference(reference), prm(parameters), clock(clock), operators(reference),
+        solver(parameters.solver), vertex_dofs(reference.triangulation())
   {
     if (prm.type == MeshMotionParameters::Type::prescribed)
     {
@@ -120,7 +118,8 @@ namespace fvfsi
       moving.push_back(std::move(patch));
     }
     if (moving.empty())
-      throw std::runtime_error("Mesh motion/Moving patches: Type = Laplace needs at least one patch");
+      throw std::runtime_error(
+        "Mesh motion/Moving patches: Type = Laplace needs at least one patch");
     // Every boundary is Dirichlet: the moving patches' displacement, zero elsewhere.
     boundary_vertex.assign(reference.vertices().size(), -1);
     for (const auto& face : reference.faces)
@@ -213,7 +212,8 @@ namespace fvfsi
           if (patch.id == face.patch)
             for (const unsigned int v : face.vertices)
               for (unsigned int j = 0; j < dim; ++j)
-                d_vertex[v][j] = patch.expression ? patch.expression->value(X[v], j) : patch.given[v][j];
+                d_vertex[v][j] =
+                  patch.expression ? patch.expression->value(X[v], j) : patch.given[v][j];
     for (unsigned int v = 0; v < d_vertex.size(); ++v)
       if (boundary_vertex[v] == 0)
         d_vertex[v] = Tensor<1, dim>();
@@ -271,7 +271,8 @@ namespace fvfsi
       if (cell->is_ghost())
         for (const unsigned int v : cell->vertex_indices())
           for (unsigned int j = 0; j < dim; ++j)
-            d_vertex[cell->vertex_index(v)][j] = vertex_vector[vertex_dof[cell->vertex_index(v)][j]];
+            d_vertex[cell->vertex_index(v)][j] =
+              vertex_vector[vertex_dof[cell->vertex_index(v)][j]];
   }
 
   template <int dim>
@@ -315,12 +316,12 @@ namespace fvfsi
       return stats.min;
     std::ostringstream where;
     where << worst;
-    throw std::runtime_error("Mesh motion: a cell is inverted (volume <= 0) at t = " +
-                             Utilities::to_string(t) + " s, the cell with reference centroid (" +
-                             where.str() +
-                             ") m; the displacement is too large for this mesh (try another Mesh "
-                             "motion/Diffusivity, see doc/results/mesh_motion.md, or a finer "
-                             "mesh near the moving patches)");
+    throw std::runtime_error(
+      "Mesh motion: a cell is inverted (volume <= 0) at t = " + Utilities::to_string(t) +
+      " s, the cell with reference centroid (" + where.str() +
+      ") m; the displacement is too large for this mesh (try another Mesh "
+      "motion/Diffusivity, see doc/results/mesh_motion.md, or a finer "
+      "mesh near the moving patches)");
   }
 
   template double min_volume_ratio(const FVGeometry<2>&, const FVGeometry<2>&, double);

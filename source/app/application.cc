@@ -23,7 +23,8 @@ namespace fvfsi
       "       fvfsi --help\n"
       "\n"
       "Runs the scene that CASE.prm describes (without a file: the built-in default scene, a 2D\n"
-      "FV Poisson problem with a manufactured solution on a distorted mesh). `--set` overrides one\n"
+      "FV Poisson problem with a manufactured solution on a distorted mesh). `--set` overrides "
+      "one\n"
       "parameter after the file is read and may be repeated, e.g.\n"
       "  fvfsi case.prm --set \"Mesh/Global refinements=5\" --set \"Output directory=/tmp/run5\"\n"
       "`--print-parameters` prints every parameter with its value (default or from CASE.prm) and\n"
@@ -34,7 +35,8 @@ namespace fvfsi
     void run_scene(const AllParameters& p, const std::string& prm_directory, Summary& summary)
     {
       const std::string& out = p.run.output_directory;
-      const auto run = [&summary](auto&& scene) {
+      const auto run = [&summary](auto&& scene)
+      {
         scene.run();
         scene.write_summary(summary);
       };
@@ -49,12 +51,12 @@ namespace fvfsi
           break;
         }
         case RunParameters::Scene::solid:
-          run(SolidScene<dim>(p.mesh, p.solid, p.solid_scene, p.time, MPI_COMM_WORLD,
-                              prm_directory, out));
+          run(SolidScene<dim>(p.mesh, p.solid, p.solid_scene, p.time, MPI_COMM_WORLD, prm_directory,
+                              out));
           break;
         case RunParameters::Scene::fluid:
-          run(FluidScene<dim>(p.mesh, p.fluid, p.fluid_scene, p.time, MPI_COMM_WORLD,
-                              prm_directory, out));
+          run(FluidScene<dim>(p.mesh, p.fluid, p.fluid_scene, p.time, MPI_COMM_WORLD, prm_directory,
+                              out));
           break;
         case RunParameters::Scene::fsi:
           run(FsiScene<dim>(p.fsi_input(), MPI_COMM_WORLD, prm_directory, out));

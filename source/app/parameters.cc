@@ -44,7 +44,10 @@ namespace fvfsi
   } // namespace
 
   const SelectionNames<RunParameters::Scene> RunParameters::scene_names = {
-    {"poisson", Scene::poisson}, {"solid", Scene::solid}, {"fluid", Scene::fluid}, {"fsi", Scene::fsi}};
+    {"poisson", Scene::poisson},
+    {"solid", Scene::solid},
+    {"fluid", Scene::fluid},
+    {"fsi", Scene::fsi}};
 
   void RunParameters::declare(ParameterHandler& prm)
   {
@@ -55,15 +58,17 @@ namespace fvfsi
                   "solver alone), fluid (the flow solver alone, on a fixed or moving mesh) or "
                   "fsi (fluid and solid coupled; the fluid mesh is `Mesh`, the solid's `Solid "
                   "mesh`).");
-    prm.add_parameter("Output directory", output_directory,
-                      "Directory for VTU/PVTU/PVD files, tables and summary.json (created if needed).");
+    prm.add_parameter(
+      "Output directory", output_directory,
+      "Directory for VTU/PVTU/PVD files, tables and summary.json (created if needed).");
   }
 
   AllParameters::AllParameters()
   {
     run.declare(prm);
     time.declare(prm);
-    mesh.patch_names = {{0, "left"}, {1, "right"}, {2, "bottom"}, {3, "top"}, {4, "back"}, {5, "front"}};
+    mesh.patch_names = {{0, "left"}, {1, "right"}, {2, "bottom"},
+                        {3, "top"},  {4, "back"},  {5, "front"}};
     mesh.distortion = 0.25;
     mesh.n_global_refinements = 5;
     mesh.declare(prm);

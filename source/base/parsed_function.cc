@@ -31,9 +31,9 @@ namespace fvfsi
     }
     catch (const std::exception& e)
     {
-      throw std::runtime_error(parameter_name + " = `" + expression + "` is not a valid expression " +
-                               "of " + (dim == 2 ? "x, y, t" : "x, y, z, t") + ": " +
-                               concise_message(e));
+      throw std::runtime_error(parameter_name + " = `" + expression +
+                               "` is not a valid expression " + "of " +
+                               (dim == 2 ? "x, y, t" : "x, y, z, t") + ": " + concise_message(e));
     }
   }
 

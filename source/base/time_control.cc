@@ -9,23 +9,22 @@ namespace fvfsi
   void TimeParameters::declare(dealii::ParameterHandler& prm)
   {
     prm.enter_subsection("Time");
-    prm.add_parameter("Time step", time_step,
-                      "dt [s] of a transient run: the fluid, the solid, the mesh motion and the "
-                      "coupling share it (a steady solver ignores it; a steady solid takes one step).",
-                      dealii::Patterns::Double(0));
+    prm.add_parameter(
+      "Time step", time_step,
+      "dt [s] of a transient run: the fluid, the solid, the mesh motion and the "
+      "coupling share it (a steady solver ignores it; a steady solid takes one step).",
+      dealii::Patterns::Double(0));
     prm.add_parameter("End time", end_time, "[s] of a transient run.", dealii::Patterns::Double(0));
     prm.leave_subsection();
   }
 
   TimeControl::TimeControl(const TimeParameters& parameters)
-    : TimeControl(parameters.time_step, parameters.end_time)
+      : TimeControl(parameters.time_step, parameters.end_time)
   {
   }
 
   TimeControl::TimeControl(const double time_step, const double end_time)
-    : dt(time_step)
-    , next_dt(time_step)
-    , end(end_time)
+      : dt(time_step), next_dt(time_step), end(end_time)
   {
     if (!(time_step > 0))
       throw std::runtime_error("Time/Time step must be positive (it is " +

@@ -14,9 +14,10 @@ namespace fvfsi
   void CouplingParameters::declare(ParameterHandler& prm)
   {
     prm.enter_subsection("Coupling");
-    prm.add_parameter("Fluid interface", fluid_interface,
-                      "Fluid patches (of `Mesh`) that touch the solid, comma separated: walls that "
-                      "are also `Mesh motion/Moving patches` (the coupling sets their displacement).");
+    prm.add_parameter(
+      "Fluid interface", fluid_interface,
+      "Fluid patches (of `Mesh`) that touch the solid, comma separated: walls that "
+      "are also `Mesh motion/Moving patches` (the coupling sets their displacement).");
     prm.add_parameter("Solid interface", solid_interface,
                       "Solid patches (of `Solid mesh`) that touch the fluid, comma separated: "
                       "`Solid/External traction` patches (the coupling sets their traction).");
@@ -46,9 +47,7 @@ namespace fvfsi
   }
 
   CouplingAcceleration::CouplingAcceleration(const CouplingParameters& parameters)
-    : prm(parameters)
-    , omega(parameters.relaxation)
-    , model(/*filter=*/1e-2)
+      : prm(parameters), omega(parameters.relaxation), model(/*filter=*/1e-2)
   {
   }
 
@@ -64,7 +63,8 @@ namespace fvfsi
       model.drop_tagged_before(time_step - prm.reuse_time_steps);
   }
 
-  InterfaceVector CouplingAcceleration::next(const InterfaceVector& d, const InterfaceVector& d_tilde)
+  InterfaceVector CouplingAcceleration::next(const InterfaceVector& d,
+                                             const InterfaceVector& d_tilde)
   {
     ++iteration;
     InterfaceVector r = d_tilde;

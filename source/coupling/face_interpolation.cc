@@ -55,9 +55,8 @@ namespace fvfsi
       {
         const auto &a = clip[e], &b = clip[(e + 1) % clip.size()];
         // Signed distance-like measure: > 0 left of a->b (inside).
-        const auto side = [&](const std::array<double, 2>& x) {
-          return (b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0]);
-        };
+        const auto side = [&](const std::array<double, 2>& x)
+        { return (b[0] - a[0]) * (x[1] - a[1]) - (b[1] - a[1]) * (x[0] - a[0]); };
         Polygon result;
         for (unsigned int i = 0; i < subject.size(); ++i)
         {
@@ -83,12 +82,14 @@ namespace fvfsi
     {
       // An orthonormal basis (e1, e2) of the plane of j, counter-clockwise about n_j.
       const Tensor<1, 3>& n = target.face_normal[j];
-      Tensor<1, 3> e1 = target.points[target.face_points[j][1]] - target.points[target.face_points[j][0]];
+      Tensor<1, 3> e1 =
+        target.points[target.face_points[j][1]] - target.points[target.face_points[j][0]];
       e1 -= (e1 * n) * n;
       e1 /= e1.norm();
       const Tensor<1, 3> e2 = cross_product_3d(n, e1);
       const Point<3>& origin = target.face_centre[j];
-      const auto polygon = [&](const InterfaceZone<3>& zone, const unsigned int f) {
+      const auto polygon = [&](const InterfaceZone<3>& zone, const unsigned int f)
+      {
         Polygon p;
         for (const unsigned int i : zone.face_points[f])
           p.push_back({{(zone.points[i] - origin) * e1, (zone.points[i] - origin) * e2}});
@@ -104,7 +105,7 @@ namespace fvfsi
   template <int dim>
   FaceInterpolation<dim>::FaceInterpolation(const InterfaceZone<dim>& source,
                                             const InterfaceZone<dim>& target)
-    : weight(target.n_faces())
+      : weight(target.n_faces())
   {
     std::vector<BoundingBox<dim>> boxes;
     for (unsigned int k = 0; k < source.n_faces(); ++k)
@@ -134,13 +135,13 @@ namespace fvfsi
           weight[j].emplace_back(k, w);
       }
       if (weight[j].empty())
-        throw std::runtime_error("Interface " + target.name + ": the face at centre (" +
-                                 Utilities::to_string(target.face_centre[j][0]) + ", " +
-                                 Utilities::to_string(target.face_centre[j][1]) +
-                                 (dim == 3 ? ", " + Utilities::to_string(target.face_centre[j][2])
-                                           : std::string()) +
-                                 ") m overlaps no face of " + source.name +
-                                 ": do the two interface patches describe the same surface?");
+        throw std::runtime_error(
+          "Interface " + target.name + ": the face at centre (" +
+          Utilities::to_string(target.face_centre[j][0]) + ", " +
+          Utilities::to_string(target.face_centre[j][1]) +
+          (dim == 3 ? ", " + Utilities::to_string(target.face_centre[j][2]) : std::string()) +
+          ") m overlaps no face of " + source.name +
+          ": do the two interface patches describe the same surface?");
     }
   }
 

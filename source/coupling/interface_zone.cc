@@ -11,7 +11,6 @@ namespace fvfsi
 {
   using namespace dealii;
 
-
   namespace
   {
     /// One face of the interface as every rank sees it.
@@ -62,11 +61,12 @@ namespace fvfsi
 
   template <int dim>
   InterfaceZone<dim>::InterfaceZone(const FVGeometry<dim>& geometry,
-                                    const std::vector<unsigned int>& patches, const std::string& name)
-    : name(name)
-    , comm(geometry.comm())
+                                    const std::vector<unsigned int>& patches,
+                                    const std::string& name)
+      : name(name), comm(geometry.comm())
   {
-    const auto on_interface = [&](const FaceGeometry<dim>& face) {
+    const auto on_interface = [&](const FaceGeometry<dim>& face)
+    {
       return face.kind == FaceKind::boundary &&
              std::find(patches.begin(), patches.end(), face.patch) != patches.end();
     };
@@ -74,9 +74,9 @@ namespace fvfsi
     if (faces.empty())
       throw std::runtime_error("Interface " + name + ": its patches have no boundary face");
     // Faces ordered by their centres, points by their coordinates: independent of the ranks.
-    std::sort(faces.begin(), faces.end(), [](const auto& a, const auto& b) {
-      return point_key(a.centre) < point_key(b.centre);
-    });
+    std::sort(faces.begin(), faces.end(),
+              [](const auto& a, const auto& b)
+              { return point_key(a.centre) < point_key(b.centre); });
     for (const auto& face : faces)
       for (const auto& x : face.vertices)
         point_lookup.emplace(point_key(x), 0);
@@ -128,9 +128,10 @@ namespace fvfsi
     /// of every rank; an entry several ranks hold (a point on a processor boundary) takes the
     /// lowest rank's value.
     template <int dim>
-    std::vector<Tensor<1, dim>> gather(const std::vector<std::pair<unsigned int, unsigned int>>& pairs,
-                                       const std::vector<Tensor<1, dim>>& local_values,
-                                       const unsigned int n, const MPI_Comm comm)
+    std::vector<Tensor<1, dim>>
+    gather(const std::vector<std::pair<unsigned int, unsigned int>>& pairs,
+           const std::vector<Tensor<1, dim>>& local_values, const unsigned int n,
+           const MPI_Comm comm)
     {
       std::vector<double> mine;
       for (const auto& [local, i] : pairs)

@@ -15,7 +15,8 @@ namespace fvfsi
   namespace
   {
     /// Barycentric weights of the point of segment [a, b] nearest to x.
-    std::array<double, 2> nearest_on_segment(const Point<2>& x, const Point<2>& a, const Point<2>& b)
+    std::array<double, 2> nearest_on_segment(const Point<2>& x, const Point<2>& a,
+                                             const Point<2>& b)
     {
       const Tensor<1, 2> ab = b - a;
       const double t = std::clamp((x - a) * ab / ab.norm_square(), 0.0, 1.0);
@@ -24,8 +25,8 @@ namespace fvfsi
 
     /// Barycentric weights of the point of triangle (a, b, c) nearest to x (Ericson, Real-Time
     /// Collision Detection, section 5.1.5: the Voronoi regions of vertices, edges and face).
-    std::array<double, 3> nearest_on_triangle(const Point<3>& x, const Point<3>& a, const Point<3>& b,
-                                              const Point<3>& c)
+    std::array<double, 3> nearest_on_triangle(const Point<3>& x, const Point<3>& a,
+                                              const Point<3>& b, const Point<3>& c)
     {
       const Tensor<1, 3> ab = b - a, ac = c - a, ap = x - a;
       const double d1 = ab * ap, d2 = ac * ap;
@@ -87,8 +88,7 @@ namespace fvfsi
     /// in 3D) to x, as weights w of the face's points; returns the distance.
     template <int dim>
     double project(const Point<dim>& x, const InterfaceZone<dim>& source, const Point<dim>& c,
-                   const Piece<dim>& p,
-                   std::array<double, InterfaceZone<dim>::n_face_points>& w)
+                   const Piece<dim>& p, std::array<double, InterfaceZone<dim>::n_face_points>& w)
     {
       constexpr unsigned int n_face_points = InterfaceZone<dim>::n_face_points;
       const auto& corners = source.face_points[p.face];
@@ -115,9 +115,7 @@ namespace fvfsi
   template <int dim>
   VertexProjection<dim>::VertexProjection(const InterfaceZone<dim>& source,
                                           const InterfaceZone<dim>& target)
-    : face(target.n_points())
-    , weight(target.n_points())
-    , face_points(source.face_points)
+      : face(target.n_points()), weight(target.n_points()), face_points(source.face_points)
   {
     std::vector<Piece<dim>> pieces;
     std::vector<BoundingBox<dim>> boxes;
@@ -129,8 +127,9 @@ namespace fvfsi
       for (unsigned int first = 0; first < (dim == 2 ? 1 : n_face_points); ++first)
       {
         pieces.push_back({f, first});
-        std::vector<Point<dim>> corners = {source.points[source.face_points[f][first]],
-                                           source.points[source.face_points[f][(first + 1) % n_face_points]]};
+        std::vector<Point<dim>> corners = {
+          source.points[source.face_points[f][first]],
+          source.points[source.face_points[f][(first + 1) % n_face_points]]};
         if (dim == 3)
           corners.push_back(centre[f]);
         boxes.emplace_back(corners);
@@ -143,7 +142,8 @@ namespace fvfsi
       const Point<dim>& x = target.points[i];
       double best = std::numeric_limits<double>::max();
       // The k nearest boxes; more while a box not yet looked at could hold a nearer piece.
-      for (unsigned int k = std::min<unsigned int>(8, pieces.size());; k = std::min<unsigned int>(2 * k, pieces.size()))
+      for (unsigned int k = std::min<unsigned int>(8, pieces.size());;
+           k = std::min<unsigned int>(2 * k, pieces.size()))
       {
         std::vector<unsigned int> candidates;
         for (const auto p : tree | bgi::adaptors::queried(bgi::nearest(x, k)))

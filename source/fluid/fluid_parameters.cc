@@ -43,12 +43,14 @@ namespace fvfsi
                       "1 / dt_P = a*_P (1 - alpha) / alpha (a*_P its momentum coefficient per unit "
                       "volume), i.e. SIMPLE-style under-relaxation of velocity and face fluxes.",
                       Patterns::Double(0.01, 1));
-    prm.add_parameter("Steady tolerance", steady_tolerance,
-                      "Steady: stop when max|u^k - u^(k-1)| / max|u| over one pseudo step is below this.",
-                      Patterns::Double(0));
-    prm.add_parameter("Max steady iterations", max_steady_iterations,
-                      "Steady: limit of pseudo time steps (exceeding it stops the run with an error).",
-                      Patterns::Integer(1));
+    prm.add_parameter(
+      "Steady tolerance", steady_tolerance,
+      "Steady: stop when max|u^k - u^(k-1)| / max|u| over one pseudo step is below this.",
+      Patterns::Double(0));
+    prm.add_parameter(
+      "Max steady iterations", max_steady_iterations,
+      "Steady: limit of pseudo time steps (exceeding it stops the run with an error).",
+      Patterns::Integer(1));
     prm.add_parameter("Outer correctors", outer_correctors,
                       "Outer (PIMPLE) loops per time step: momentum re-assembled with the latest "
                       "fluxes; 1 = plain PISO.",

@@ -150,8 +150,8 @@ namespace fvfsi
     for (unsigned int j = 0; j < dim; ++j)
     {
       for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
-        rhs.local_element(c) = B_rest[j].local_element(c) + B_time[j][c] -
-                               geometry.cell_volume[c] * grad_p[c][j];
+        rhs.local_element(c) =
+          B_rest[j].local_element(c) + B_time[j][c] - geometry.cell_volume[c] * grad_p[c][j];
       momentum_solver.solve(momentum_matrix, u.components[j], rhs,
                             "fluid momentum, component " + std::to_string(j));
     }
@@ -189,9 +189,9 @@ namespace fvfsi
           : face.w / a_star.local_element(face.P) + (1 - face.w) / a_star.local_element(face.N);
       a_star_f[f] = 1 / inverse_a_star;
       const auto r = volume_ratios(f);
-      c0_face[f] = prm.transient ? c1 * r[0] - c2 * r[1]
-                                 : a_star_f[f] * (1 - prm.momentum_relaxation) /
-                                     prm.momentum_relaxation;
+      c0_face[f] = prm.transient
+                     ? c1 * r[0] - c2 * r[1]
+                     : a_star_f[f] * (1 - prm.momentum_relaxation) / prm.momentum_relaxation;
       gamma_p[f] = 1 / (c0_face[f] + a_star_f[f]);
       const double coefficient = gamma_p[f] * face.area / face.d_n;
       if (face.N == invalid_cell)
@@ -233,13 +233,12 @@ namespace fvfsi
         continue;
       if (face.N == invalid_cell && conditions.type(f) != Type::outlet)
       {
-        F_star[f] = conditions.type(f) == Type::velocity_inlet ? face.S * boundary_u[f]
-                                                                    : F_mesh[f];
+        F_star[f] = conditions.type(f) == Type::velocity_inlet ? face.S * boundary_u[f] : F_mesh[f];
         continue;
       }
       const unsigned int P = face.P, N = face.N;
       Tensor<1, dim> h_by_a;
-      Tensor<1, dim> m; // from the interpolation point to the face centre
+      Tensor<1, dim> m;                     // from the interpolation point to the face centre
       std::array<Tensor<1, dim>, dim> grad; // interpolated grad u_j
       if (N == invalid_cell)
       {
@@ -250,7 +249,8 @@ namespace fvfsi
       }
       else
       {
-        h_by_a = face.w * h[P] / a_star.local_element(P) + (1 - face.w) * h[N] / a_star.local_element(N);
+        h_by_a =
+          face.w * h[P] / a_star.local_element(P) + (1 - face.w) * h[N] / a_star.local_element(N);
         m = face.centre - (face.w * geometry.centroid[P] + (1 - face.w) * geometry.centroid[N]);
         for (unsigned int j = 0; j < dim; ++j)
           grad[j] = face.w * grad_u[j][P] + (1 - face.w) * grad_u[j][N];
@@ -259,8 +259,10 @@ namespace fvfsi
         h_by_a[j] += m * grad[j]; // skewness correction
       // Old fluxes carried to the new face: F^o + u^o_f . (S_f - S_f^o) (exactly F^o on a fixed
       // mesh), weighted by the volume ratios r1_f, r2_f.
-      const Tensor<1, dim> u_o = N == invalid_cell ? u_old[P] : face.w * u_old[P] + (1 - face.w) * u_old[N];
-      const Tensor<1, dim> u_oo = N == invalid_cell ? u_old2[P] : face.w * u_old2[P] + (1 - face.w) * u_old2[N];
+      const Tensor<1, dim> u_o =
+        N == invalid_cell ? u_old[P] : face.w * u_old[P] + (1 - face.w) * u_old[N];
+      const Tensor<1, dim> u_oo =
+        N == invalid_cell ? u_old2[P] : face.w * u_old2[P] + (1 - face.w) * u_old2[N];
       const double F_o = F_old[f] + u_o * (face.S - S_old[f]);
       const double F_oo = F_old2[f] + u_oo * (face.S - S_old2[f]);
       const auto r = volume_ratios(f);
@@ -295,8 +297,10 @@ namespace fvfsi
     control.update_after_last = false;
     solve_deferred_correction(
       control, pressure_solver, pressure_matrix, pressure_rhs, p,
-      [this](CellVector& rhs) { operators.laplacian.add_correction(gamma_p, pressure_bc, grad_p, rhs); },
-      [this]() {
+      [this](CellVector& rhs)
+      { operators.laplacian.add_correction(gamma_p, pressure_bc, grad_p, rhs); },
+      [this]()
+      {
         update_pressure_boundary_values();
         update_pressure_gradient();
       },
@@ -315,8 +319,8 @@ namespace fvfsi
       if (gamma_p[f] == 0)
         F[f] = F_star[f];
       else
-        F[f] = F_star[f] -
-               gamma_p[f] * face.area * operators.laplacian.normal_gradient(f, p, grad_p, pressure_bc);
+        F[f] = F_star[f] - gamma_p[f] * face.area *
+                             operators.laplacian.normal_gradient(f, p, grad_p, pressure_bc);
     }
   }
 

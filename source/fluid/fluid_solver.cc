@@ -21,17 +21,11 @@ namespace fvfsi
   FluidSolver<dim>::FluidSolver(const FVGeometry<dim>& geometry,
                                 const MeshParameters& mesh_parameters,
                                 const FluidParameters& parameters, const TimeControl& clock)
-    : geometry(geometry)
-    , prm(parameters)
-    , clock(clock)
-    , pcout(std::cout, Utilities::MPI::this_mpi_process(geometry.comm()) == 0)
-    , timer_output(MPI_COMM_SELF, pcout, TimerOutput::never, TimerOutput::wall_times)
-    , operators(geometry)
-    , body_force(dim)
-    , momentum(geometry)
-    , pressure_equation(geometry)
-    , momentum_solver(parameters.momentum_solver)
-    , pressure_solver(parameters.pressure_solver)
+      : geometry(geometry), prm(parameters), clock(clock),
+        pcout(std::cout, Utilities::MPI::this_mpi_process(geometry.comm()) == 0),
+        timer_output(MPI_COMM_SELF, pcout, TimerOutput::never, TimerOutput::wall_times),
+        operators(geometry), body_force(dim), momentum(geometry), pressure_equation(geometry),
+        momentum_solver(parameters.momentum_solver), pressure_solver(parameters.pressure_solver)
   {
     initialize_function(body_force, prm.body_force, "Fluid/Body force");
     setup_boundary_conditions(mesh_parameters);
@@ -86,8 +80,10 @@ namespace fvfsi
         const Type t = conditions.type(f);
         const unsigned int id = geometry.faces[f].patch;
         const bool velocity_given = t == Type::velocity_inlet || t == Type::wall;
-        velocity_bc.patch_type[id] = velocity_given ? BoundaryType::dirichlet : BoundaryType::neumann;
-        pressure_bc.patch_type[id] = t == Type::outlet ? BoundaryType::dirichlet : BoundaryType::neumann;
+        velocity_bc.patch_type[id] =
+          velocity_given ? BoundaryType::dirichlet : BoundaryType::neumann;
+        pressure_bc.patch_type[id] =
+          t == Type::outlet ? BoundaryType::dirichlet : BoundaryType::neumann;
         if (t == Type::outlet)
           n_outlet_faces += 1;
       }
@@ -232,7 +228,8 @@ namespace fvfsi
   void FluidSolver<dim>::move_mesh(const std::vector<double>& swept_volume)
   {
     if (!prm.transient)
-      throw std::runtime_error("Fluid: the mesh can only move in a transient run (Fluid/Transient)");
+      throw std::runtime_error(
+        "Fluid: the mesh can only move in a transient run (Fluid/Transient)");
     AssertDimension(swept_volume.size(), geometry.faces.size());
     swept = swept_volume;
     operators.reinit(); // their coefficients depend on the geometry
@@ -253,7 +250,8 @@ namespace fvfsi
   std::array<double, 2> FluidSolver<dim>::volume_ratios(const unsigned int f) const
   {
     const auto& face = geometry.faces[f];
-    const auto ratios = [this](const unsigned int c) {
+    const auto ratios = [this](const unsigned int c)
+    {
       const double V = geometry.cell_volume[c];
       return std::array<double, 2>{{V_old[c] / V, V_old2[c] / V}};
     };
@@ -275,10 +273,10 @@ namespace fvfsi
         sum += std::abs(u.components[j].local_element(c));
     }
     if (!std::isfinite(Utilities::MPI::sum(sum, geometry.comm())))
-      throw std::runtime_error("Fluid: " + std::string(field) + " is not finite at " + step_name() +
-                               (prm.transient ? "; reduce Fluid/Time step"
-                                              : "; lower Fluid/Momentum relaxation") +
-                               " or check the boundary conditions");
+      throw std::runtime_error(
+        "Fluid: " + std::string(field) + " is not finite at " + step_name() +
+        (prm.transient ? "; reduce Fluid/Time step" : "; lower Fluid/Momentum relaxation") +
+        " or check the boundary conditions");
   }
 
   template <int dim>
@@ -346,9 +344,8 @@ namespace fvfsi
     catch (const std::exception& e)
     {
       const std::string what = concise_message(e);
-      throw std::runtime_error(what.rfind("Fluid:", 0) == 0
-                                 ? what
-                                 : "Fluid: at " + step_name() + ": " + what);
+      throw std::runtime_error(
+        what.rfind("Fluid:", 0) == 0 ? what : "Fluid: at " + step_name() + ": " + what);
     }
     update_velocity_boundary_values();
     update_velocity_gradients();
@@ -494,16 +491,19 @@ namespace fvfsi
   {
     fields.add_vector("u", [this](const unsigned int c) { return u[c]; });
     fields.add("p", [this](const unsigned int c) { return prm.rho * p.local_element(c); });
-    fields.add("vorticity", [this](const unsigned int c) {
-      Tensor<2, dim> G; // G[i][j] = d u_j / d x_i
-      for (unsigned int j = 0; j < dim; ++j)
-        for (unsigned int i = 0; i < dim; ++i)
-          G[i][j] = grad_u[j][c][i];
-      if constexpr (dim == 2)
-        return G[0][1] - G[1][0];
-      else
-        return Tensor<1, 3>({G[1][2] - G[2][1], G[2][0] - G[0][2], G[0][1] - G[1][0]}).norm();
-    });
+    fields.add(
+      "vorticity",
+      [this](const unsigned int c)
+      {
+        Tensor<2, dim> G; // G[i][j] = d u_j / d x_i
+        for (unsigned int j = 0; j < dim; ++j)
+          for (unsigned int i = 0; i < dim; ++i)
+            G[i][j] = grad_u[j][c][i];
+        if constexpr (dim == 2)
+          return G[0][1] - G[1][0];
+        else
+          return Tensor<1, 3>({G[1][2] - G[2][1], G[2][0] - G[0][2], G[0][1] - G[1][0]}).norm();
+      });
   }
 
   template class FluidSolver<2>;

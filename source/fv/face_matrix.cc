@@ -7,8 +7,7 @@ namespace fvfsi
   using namespace dealii;
 
   template <int dim>
-  FaceMatrix<dim>::FaceMatrix(const FVGeometry<dim>& geometry)
-    : geometry(geometry)
+  FaceMatrix<dim>::FaceMatrix(const FVGeometry<dim>& geometry) : geometry(geometry)
   {
     reinit();
   }

@@ -92,7 +92,8 @@ namespace fvfsi
                              const FaceVector& boundary_values, CellGradient<dim>& gradient,
                              const bool skew_corrected)
   {
-    gauss_gradient(geometry, phi, boundary_values, [](unsigned int) { return 0.0; }, gradient);
+    gauss_gradient(
+      geometry, phi, boundary_values, [](unsigned int) { return 0.0; }, gradient);
     if (!skew_corrected)
       return;
     // Skew correction: the linear interpolation is a value at r_f' = w r_P + (1 - w) r_N on the
@@ -100,7 +101,8 @@ namespace fvfsi
     const CellGradient<dim> plain = gradient;
     gauss_gradient(
       geometry, phi, boundary_values,
-      [&](const unsigned int f) {
+      [&](const unsigned int f)
+      {
         const auto& face = geometry.faces[f];
         const Point<dim> r_f_prime(face.w * geometry.centroid[face.P] +
                                    (1 - face.w) * geometry.centroid[face.N]);
@@ -110,7 +112,8 @@ namespace fvfsi
   }
 
   template <int dim>
-  LeastSquaresGradient<dim>::LeastSquaresGradient(const FVGeometry<dim>& geometry) : geometry(geometry)
+  LeastSquaresGradient<dim>::LeastSquaresGradient(const FVGeometry<dim>& geometry)
+      : geometry(geometry)
   {
     reinit();
   }

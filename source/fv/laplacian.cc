@@ -10,8 +10,7 @@ namespace fvfsi
   using namespace dealii;
 
   template <int dim>
-  Laplacian<dim>::Laplacian(const FVGeometry<dim>& geometry)
-    : geometry(geometry)
+  Laplacian<dim>::Laplacian(const FVGeometry<dim>& geometry) : geometry(geometry)
   {
   }
 
@@ -48,27 +47,27 @@ namespace fvfsi
       const auto P = geometry.global_index(face.P);
       switch (face.kind)
       {
-      case FaceKind::interior:
-        matrix.add(P, P, a);
-        matrix.add(P, geometry.global_index(face.N), -a);
-        matrix.add(geometry.global_index(face.N), geometry.global_index(face.N), a);
-        matrix.add(geometry.global_index(face.N), P, -a);
-        break;
-      case FaceKind::processor: // the other rank assembles the N row
-        matrix.add(P, P, a);
-        matrix.add(P, geometry.global_index(face.N), -a);
-        break;
-      case FaceKind::boundary:
-        if (bc.type(face) == BoundaryType::dirichlet)
-        {
+        case FaceKind::interior:
           matrix.add(P, P, a);
-          rhs.local_element(face.P) += a * bc.value[f];
-        }
-        else
-          rhs.local_element(face.P) += gamma[f] * face.area * bc.value[f];
-        break;
-      case FaceKind::ghost_boundary:
-        break;
+          matrix.add(P, geometry.global_index(face.N), -a);
+          matrix.add(geometry.global_index(face.N), geometry.global_index(face.N), a);
+          matrix.add(geometry.global_index(face.N), P, -a);
+          break;
+        case FaceKind::processor: // the other rank assembles the N row
+          matrix.add(P, P, a);
+          matrix.add(P, geometry.global_index(face.N), -a);
+          break;
+        case FaceKind::boundary:
+          if (bc.type(face) == BoundaryType::dirichlet)
+          {
+            matrix.add(P, P, a);
+            rhs.local_element(face.P) += a * bc.value[f];
+          }
+          else
+            rhs.local_element(face.P) += gamma[f] * face.area * bc.value[f];
+          break;
+        case FaceKind::ghost_boundary:
+          break;
       }
     }
   }
@@ -100,7 +99,8 @@ namespace fvfsi
   }
 
   template <int dim>
-  void Laplacian<dim>::add_correction(const FaceVector& gamma, const ScalarBoundaryConditions<dim>& bc,
+  void Laplacian<dim>::add_correction(const FaceVector& gamma,
+                                      const ScalarBoundaryConditions<dim>& bc,
                                       const CellGradient<dim>& grad, CellVector& rhs,
                                       const CellHessian<dim>* hessian) const
   {
@@ -144,10 +144,10 @@ namespace fvfsi
       if (face.N != invalid_cell)
         continue;
       // Neumann: solve the Dirichlet form g = (phi_b - phi_P + explicit part) / d_fn for phi_b.
-      values[f] = bc.type(face) == BoundaryType::dirichlet
-                    ? bc.value[f]
-                    : phi.local_element(face.P) + face.d_n * bc.value[f] -
-                        explicit_part(face, grad, hessian);
+      values[f] =
+        bc.type(face) == BoundaryType::dirichlet
+          ? bc.value[f]
+          : phi.local_element(face.P) + face.d_n * bc.value[f] - explicit_part(face, grad, hessian);
     }
     return values;
   }

@@ -17,7 +17,8 @@ namespace fvfsi
     add_selection(prm, "Method", method, {{"CG", Method::cg}, {"GMRES", Method::gmres}},
                   "Krylov method: CG for symmetric matrices, GMRES otherwise.");
     add_selection(prm, "Preconditioner", preconditioner,
-                  {{"AMG", Preconditioner::amg}, {"ILU", Preconditioner::ilu},
+                  {{"AMG", Preconditioner::amg},
+                   {"ILU", Preconditioner::ilu},
                    {"Jacobi", Preconditioner::jacobi}},
                   "AMG (Trilinos ML, one V-cycle), ILU (Trilinos Ifpack ILU(0)) or Jacobi.");
     prm.add_parameter("Residual reduction", reduction,
@@ -82,20 +83,23 @@ namespace fvfsi
     const double x_norm = x_trilinos.l2_norm(); // |A| (a pass over the matrix) only if x != 0
     const double round_off =
       1e-13 * std::max(b_trilinos.l2_norm(), x_norm == 0 ? 0.0 : matrix.linfty_norm() * x_norm);
-    SolverControl control(parameters.max_iterations,
-                          std::max({parameters.absolute_tolerance, parameters.reduction * r0, round_off}),
-                          false, false);
+    SolverControl control(
+      parameters.max_iterations,
+      std::max({parameters.absolute_tolerance, parameters.reduction * r0, round_off}), false,
+      false);
     if (!std::isfinite(r0))
       throw std::runtime_error("linear solve of " + what +
                                ": the right-hand side or the start value is not finite (NaN or "
                                "inf): the solution diverged before this solve");
     if (r0 <= control.tolerance())
       return 0;
-    const auto attempt = [&]() {
+    const auto attempt = [&]()
+    {
       if (parameters.method == LinearSolverParameters::Method::cg)
         TrilinosWrappers::SolverCG(control).solve(matrix, x_trilinos, b_trilinos, *preconditioner);
       else
-        TrilinosWrappers::SolverGMRES(control).solve(matrix, x_trilinos, b_trilinos, *preconditioner);
+        TrilinosWrappers::SolverGMRES(control).solve(matrix, x_trilinos, b_trilinos,
+                                                     *preconditioner);
     };
     unsigned int iterations = 0;
     try

@@ -14,7 +14,7 @@ namespace fvfsi
 
   template <int dim>
   PointProbes<dim>::PointProbes(const std::string& list, const std::string& parameter)
-    : parameter(parameter)
+      : parameter(parameter)
   {
     for (const auto& [name, value] : parse_named_values(list, parameter))
     {
@@ -64,8 +64,8 @@ namespace fvfsi
       {
         // the point is not in this rank's part of the mesh
       }
-      n_found[i] = Utilities::MPI::sum(cell[i] != numbers::invalid_unsigned_int ? 1. : 0.,
-                                       geometry.comm());
+      n_found[i] =
+        Utilities::MPI::sum(cell[i] != numbers::invalid_unsigned_int ? 1. : 0., geometry.comm());
       if (n_found[i] == 0)
       {
         std::ostringstream where;

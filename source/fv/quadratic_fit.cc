@@ -38,7 +38,8 @@ namespace fvfsi
       for (unsigned int i = 0; i < CellHessian<dim>::n_components; ++i)
       {
         const auto kl = SymmetricTensor<2, dim>::unrolled_to_component_indices(i);
-        row[dim + i] = kl[0] == kl[1] ? n[kl[0]] * x[kl[0]] : n[kl[0]] * x[kl[1]] + n[kl[1]] * x[kl[0]];
+        row[dim + i] =
+          kl[0] == kl[1] ? n[kl[0]] * x[kl[0]] : n[kl[0]] * x[kl[1]] + n[kl[1]] * x[kl[0]];
       }
     }
 
@@ -54,8 +55,7 @@ namespace fvfsi
 
   template <int dim>
   QuadraticFit<dim>::QuadraticFit(const FVGeometry<dim>& geometry, const QuadraticFitData& data)
-    : geometry(geometry)
-    , options(data)
+      : geometry(geometry), options(data)
   {
     // Cells and boundary faces around every vertex (the ghost layer completes them for the
     // vertices of owned cells).
@@ -79,9 +79,8 @@ namespace fvfsi
                                         const std::vector<std::vector<unsigned int>>& cells_of,
                                         const std::vector<std::vector<unsigned int>>& faces_of)
   {
-    const auto masked = [](const std::vector<bool>& mask, const unsigned int f) {
-      return !mask.empty() && mask[f];
-    };
+    const auto masked = [](const std::vector<bool>& mask, const unsigned int f)
+    { return !mask.empty() && mask[f]; };
     // P and its vertex neighbours, and the boundary faces that touch P, in global order (every
     // rank that holds P sums the same terms in the same order).
     std::vector<unsigned int> cells, faces;
@@ -90,9 +89,9 @@ namespace fvfsi
       cells.insert(cells.end(), cells_of[v].begin(), cells_of[v].end());
       faces.insert(faces.end(), faces_of[v].begin(), faces_of[v].end());
     }
-    std::sort(cells.begin(), cells.end(), [&](const unsigned int a, const unsigned int b) {
-      return geometry.global_index(a) < geometry.global_index(b);
-    });
+    std::sort(cells.begin(), cells.end(),
+              [&](const unsigned int a, const unsigned int b)
+              { return geometry.global_index(a) < geometry.global_index(b); });
     cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
     if (!options.value_faces_touch_P)
     { // the faces of P and its vertex neighbours instead
@@ -102,7 +101,8 @@ namespace fvfsi
           if (geometry.faces[f].N == invalid_cell)
             faces.push_back(f);
     }
-    const auto face_order = [&](const unsigned int a, const unsigned int b) {
+    const auto face_order = [&](const unsigned int a, const unsigned int b)
+    {
       const auto &fa = geometry.faces[a], &fb = geometry.faces[b];
       return std::make_pair(geometry.global_index(fa.P), fa.face_no) <
              std::make_pair(geometry.global_index(fb.P), fb.face_no);
@@ -136,11 +136,10 @@ namespace fvfsi
       if (!fit(P))
       {
         if (options.undetermined_is_error)
-          throw std::runtime_error("QuadraticFit: the neighbourhood of cell " +
-                                   std::to_string(geometry.global_index(P)) +
-                                   " does not determine a quadratic (" +
-                                   std::to_string(n_data(P)) + " data for " +
-                                   std::to_string(n_unknowns) + " unknowns, or rank deficient)");
+          throw std::runtime_error(
+            "QuadraticFit: the neighbourhood of cell " + std::to_string(geometry.global_index(P)) +
+            " does not determine a quadratic (" + std::to_string(n_data(P)) + " data for " +
+            std::to_string(n_unknowns) + " unknowns, or rank deficient)");
         ++n_without_fit;
       }
   }
@@ -156,7 +155,8 @@ namespace fvfsi
     for (unsigned int j = 0; j < n; ++j)
     {
       const Datum& d = data[start[P] + j];
-      Point<dim> r = d.kind == Kind::cell ? geometry.centroid[d.index] : geometry.faces[d.index].centre;
+      Point<dim> r =
+        d.kind == Kind::cell ? geometry.centroid[d.index] : geometry.faces[d.index].centre;
       r -= 2 * ((r - d.plane) * d.m) * d.m; // mirror image (no-op for m = 0)
       s[j] = r - geometry.centroid[P];
       if (d.kind != Kind::normal_derivative)

@@ -7,7 +7,8 @@ namespace fvfsi
   using namespace dealii;
 
   template <int dim>
-  VertexInterpolation<dim>::VertexInterpolation(const FVGeometry<dim>& geometry) : geometry(geometry)
+  VertexInterpolation<dim>::VertexInterpolation(const FVGeometry<dim>& geometry)
+      : geometry(geometry)
   {
     const unsigned int n_tria_vertices = geometry.vertices().size();
     std::vector<std::vector<unsigned int>> cells_of(n_tria_vertices), faces_of(n_tria_vertices);
@@ -26,10 +27,10 @@ namespace fvfsi
 
     // Sort every stencil by global cell number (faces: by their cell's number, then face number),
     // which is the same on every rank.
-    const auto by_global_cell = [&](const unsigned int a, const unsigned int b) {
-      return geometry.global_index(a) < geometry.global_index(b);
-    };
-    const auto by_global_face = [&](const unsigned int a, const unsigned int b) {
+    const auto by_global_cell = [&](const unsigned int a, const unsigned int b)
+    { return geometry.global_index(a) < geometry.global_index(b); };
+    const auto by_global_face = [&](const unsigned int a, const unsigned int b)
+    {
       const auto &fa = geometry.faces[a], &fb = geometry.faces[b];
       return std::make_pair(geometry.global_index(fa.P), fa.face_no) <
              std::make_pair(geometry.global_index(fb.P), fb.face_no);
@@ -113,7 +114,8 @@ namespace fvfsi
   }
 
   template <int dim>
-  void VertexInterpolation<dim>::interpolate(const CellVector& phi, const FaceVector& boundary_values,
+  void VertexInterpolation<dim>::interpolate(const CellVector& phi,
+                                             const FaceVector& boundary_values,
                                              std::vector<double>& vertex_values) const
   {
     vertex_values.resize(geometry.vertices().size());

@@ -7,7 +7,7 @@ namespace fvfsi
 {
   HistoryFile::HistoryFile(const std::string& file_name, const std::vector<std::string>& columns,
                            const MPI_Comm comm)
-    : names(columns)
+      : names(columns)
   {
     if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
       return;

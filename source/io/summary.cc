@@ -42,9 +42,18 @@ namespace fvfsi
     entries.emplace_back(key, json);
   }
 
-  void Summary::set(const std::string& key, const double value) { put(top, key, number(value)); }
-  void Summary::set(const std::string& key, const std::string& value) { put(top, key, quoted(value)); }
-  void Summary::set_result(const std::string& key, const double value) { put(results, key, number(value)); }
+  void Summary::set(const std::string& key, const double value)
+  {
+    put(top, key, number(value));
+  }
+  void Summary::set(const std::string& key, const std::string& value)
+  {
+    put(top, key, quoted(value));
+  }
+  void Summary::set_result(const std::string& key, const double value)
+  {
+    put(results, key, number(value));
+  }
   void Summary::set_text_result(const std::string& key, const std::string& value)
   {
     put(results, key, quoted(value));
@@ -67,7 +76,8 @@ namespace fvfsi
     std::ofstream out(file_name);
     if (!out)
       throw std::runtime_error("cannot write `" + file_name + "`");
-    const auto object = [&out](const std::string& name, const Entries& entries) {
+    const auto object = [&out](const std::string& name, const Entries& entries)
+    {
       out << "  " << quoted(name) << ": {";
       for (unsigned int i = 0; i < entries.size(); ++i)
         out << (i ? "," : "") << "\n    " << quoted(entries[i].first) << ": " << entries[i].second;

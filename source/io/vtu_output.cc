@@ -11,7 +11,7 @@ namespace fvfsi
   template <int dim>
   VtuOutput<dim>::VtuOutput(const FVGeometry<dim>& geometry, const std::string& directory,
                             const std::string& base_name)
-    : geometry(geometry), directory(directory), base_name(base_name)
+      : geometry(geometry), directory(directory), base_name(base_name)
   {
   }
 

@@ -33,17 +33,18 @@ namespace fvfsi
       const unsigned int n = static_cast<unsigned int>(x[2]);
       if (!(a > 0 && b > a && n > 0))
         throw std::runtime_error("fvfsi_quarter_plate_with_hole: needs 0 < a < b and n > 0");
-      const auto graded = [beta](const double xi) {
-        return beta == 0 ? xi : (std::exp(beta * xi) - 1) / (std::exp(beta) - 1);
-      };
+      const auto graded = [beta](const double xi)
+      { return beta == 0 ? xi : (std::exp(beta * xi) - 1) / (std::exp(beta) - 1); };
       Triangulation<2> blocks[2];
       for (unsigned int k = 0; k < 2; ++k)
       {
-        GridGenerator::subdivided_hyper_rectangle(blocks[k], {n, n}, Point<2>(0, 0), Point<2>(1, 1));
+        GridGenerator::subdivided_hyper_rectangle(blocks[k], {n, n}, Point<2>(0, 0),
+                                                  Point<2>(1, 1));
         // (xi, eta) -> the point at fraction graded(xi) from the hole to the plate edge along the
         // ray at angle theta; block 0 covers theta in [0, pi/4] (edge x = b), block 1 [pi/4, pi/2].
         GridTools::transform(
-          [&](const Point<2>& p) {
+          [&](const Point<2>& p)
+          {
             const double theta = (k + p[1]) * numbers::PI / 4;
             const Point<2> inner(a * std::cos(theta), a * std::sin(theta));
             const Point<2> outer = k == 0 ? Point<2>(b, b * std::tan(theta))
@@ -70,10 +71,12 @@ namespace fvfsi
     {
       const auto x = numbers_of("fvfsi_turek_hron_flag", arguments, 2, 2);
       const unsigned int nx = static_cast<unsigned int>(x[0]), ny = static_cast<unsigned int>(x[1]);
-      GridGenerator::subdivided_hyper_rectangle(tria, {nx, ny}, Point<2>(0, 0), Point<2>(1, 1), true);
+      GridGenerator::subdivided_hyper_rectangle(tria, {nx, ny}, Point<2>(0, 0), Point<2>(1, 1),
+                                                true);
       const double r = 0.05, x_end = 0.6, y0 = 0.19, h = 0.02;
       GridTools::transform(
-        [&](const Point<2>& p) {
+        [&](const Point<2>& p)
+        {
           const double y = y0 + h * p[1];
           const double x_cylinder = 0.2 + std::sqrt(r * r - (y - 0.2) * (y - 0.2));
           return Point<2>(x_cylinder + p[0] * (x_end - x_cylinder), y);
@@ -93,7 +96,8 @@ namespace fvfsi
   }
 
   template <int dim>
-  void make_benchmark_mesh(const std::string& name, const std::string& arguments, Triangulation<dim>& tria)
+  void make_benchmark_mesh(const std::string& name, const std::string& arguments,
+                           Triangulation<dim>& tria)
   {
     if constexpr (dim == 2)
     {
@@ -108,7 +112,8 @@ namespace fvfsi
       if (name == "fvfsi_cavity_plate")
         return make_cavity_plate(arguments, tria);
     }
-    throw std::runtime_error("Mesh/Generator = " + name + " is not available in " + std::to_string(dim) + "D");
+    throw std::runtime_error("Mesh/Generator = " + name + " is not available in " +
+                             std::to_string(dim) + "D");
   }
 
   template void make_benchmark_mesh(const std::string&, const std::string&, Triangulation<2>&);

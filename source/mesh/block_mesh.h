@@ -22,9 +22,11 @@ namespace fvfsi::internal
     return [a, b](const double s) { return Point<2>(a + s * (b - a)); };
   }
 
-  inline Curve arc(const Point<2>& centre, const double radius, const double angle_0, const double angle_1)
+  inline Curve arc(const Point<2>& centre, const double radius, const double angle_0,
+                   const double angle_1)
   {
-    return [=](const double s) {
+    return [=](const double s)
+    {
       const double phi = angle_0 + s * (angle_1 - angle_0);
       return Point<2>(centre[0] + radius * std::cos(phi), centre[1] + radius * std::sin(phi));
     };
@@ -38,11 +40,12 @@ namespace fvfsi::internal
 
   /// A block with edges bottom(s), top(s) (t = 0, 1) and left(t), right(t) (s = 0, 1), n_s x n_t
   /// cells, grading beta_s, beta_t. Orientation is fixed so that cells are not inverted.
-  inline void make_block(Triangulation<2>& block, const Curve& bottom, const Curve& top, const Curve& left,
-                  const Curve& right, const unsigned int n_s, const unsigned int n_t,
-                  const double beta_s = 0, const double beta_t = 0)
+  inline void make_block(Triangulation<2>& block, const Curve& bottom, const Curve& top,
+                         const Curve& left, const Curve& right, const unsigned int n_s,
+                         const unsigned int n_t, const double beta_s = 0, const double beta_t = 0)
   {
-    const auto coons = [&](const double s, const double t) {
+    const auto coons = [&](const double s, const double t)
+    {
       return Point<2>((1 - t) * bottom(s) + t * top(s) + (1 - s) * left(t) + s * right(t) -
                       ((1 - s) * (1 - t) * bottom(0) + s * (1 - t) * bottom(1) +
                        (1 - s) * t * top(0) + s * t * top(1)));
@@ -52,7 +55,8 @@ namespace fvfsi::internal
     const bool flip = d_s[0] * d_t[1] - d_s[1] * d_t[0] < 0;
     GridGenerator::subdivided_hyper_rectangle(block, {n_s, n_t}, Point<2>(0, 0), Point<2>(1, 1));
     GridTools::transform(
-      [&](const Point<2>& p) {
+      [&](const Point<2>& p)
+      {
         const double s = graded(flip ? 1 - p[0] : p[0], beta_s), t = graded(p[1], beta_t);
         return coons(s, t);
       },

@@ -55,10 +55,13 @@ namespace fvfsi
     /// the plate) must be an integer, and h <= 0.2.
     double cell_size(const std::string& name, const std::string& arguments)
     {
-      const auto fail = [&]() {
-        throw std::runtime_error(name + " needs one argument `h`, the target cell size [m] with "
-                                 "4/h an integer and h <= 0.2 (e.g. 0.1, 0.05, 0.025, 0.0125), got `" +
-                                 arguments + "`");
+      const auto fail = [&]()
+      {
+        throw std::runtime_error(
+          name +
+          " needs one argument `h`, the target cell size [m] with "
+          "4/h an integer and h <= 0.2 (e.g. 0.1, 0.05, 0.025, 0.0125), got `" +
+          arguments + "`");
       };
       const auto items = Utilities::split_string_list(arguments, ':');
       if (items.size() != 1)
@@ -96,20 +99,22 @@ namespace fvfsi
     const unsigned int n_mid = n_floor - 2 * n_a;
     // Other edges: the fewest cells not longer than h. The quadrant sides (length r + a) and the
     // half arcs (length r pi / 4) share a subdivision: it is set by their mean length.
-    const auto cells = [h](const double length) {
-      return std::max(1u, static_cast<unsigned int>(std::ceil(length / h - 1e-6)));
-    };
+    const auto cells = [h](const double length)
+    { return std::max(1u, static_cast<unsigned int>(std::ceil(length / h - 1e-6))); };
     const unsigned int n_arc = cells(((r + a) + r * q) / 2), n_up = cells(H - a),
-                       n_cavity = cells(depth - r), n_in = cells(x_0 - r), n_out = cells(L - x_1 - r);
+                       n_cavity = cells(depth - r), n_in = cells(x_0 - r),
+                       n_out = cells(L - x_1 - r);
 
     std::vector<std::unique_ptr<Triangulation<2>>> blocks;
     const auto add = [&](const Curve& b, const Curve& t, const Curve& l, const Curve& rt,
-                         unsigned int n_s, unsigned int n_t) {
+                         unsigned int n_s, unsigned int n_t)
+    {
       blocks.push_back(std::make_unique<Triangulation<2>>());
       make_block(*blocks.back(), b, t, l, rt, n_s, n_t);
     };
-    const auto rectangle = [&](double x0, double x1, double y0, double y1, unsigned int n_x,
-                               unsigned int n_y) {
+    const auto rectangle =
+      [&](double x0, double x1, double y0, double y1, unsigned int n_x, unsigned int n_y)
+    {
       add(line({x0, y0}, {x1, y0}), line({x0, y1}, {x1, y1}), line({x0, y0}, {x0, y1}),
           line({x1, y0}, {x1, y1}), n_x, n_y);
     };
@@ -117,14 +122,18 @@ namespace fvfsi
     // Left corner: ring blocks A (90 -> 45 degrees) and B (45 -> 0 degrees).
     {
       const Point<2> P1(x_0 - r, 0), P2(x_0, -r), M = arc(C_L, r, q, q)(0), K(x_0 + a, a);
-      add(arc(C_L, r, 2 * q, q), line({x_0 - r, a}, K), line(P1, {x_0 - r, a}), line(M, K), n_arc, n_a);
-      add(arc(C_L, r, q, 0), line(K, {x_0 + a, -r}), line(M, K), line(P2, {x_0 + a, -r}), n_arc, n_a);
+      add(arc(C_L, r, 2 * q, q), line({x_0 - r, a}, K), line(P1, {x_0 - r, a}), line(M, K), n_arc,
+          n_a);
+      add(arc(C_L, r, q, 0), line(K, {x_0 + a, -r}), line(M, K), line(P2, {x_0 + a, -r}), n_arc,
+          n_a);
     }
     // Right corner (mirrored): A (90 -> 135 degrees) and B (135 -> 180 degrees).
     {
       const Point<2> P1(x_1 + r, 0), P2(x_1, -r), M = arc(C_R, r, 3 * q, 3 * q)(0), K(x_1 - a, a);
-      add(arc(C_R, r, 2 * q, 3 * q), line({x_1 + r, a}, K), line(P1, {x_1 + r, a}), line(M, K), n_arc, n_a);
-      add(arc(C_R, r, 3 * q, 4 * q), line(K, {x_1 - a, -r}), line(M, K), line(P2, {x_1 - a, -r}), n_arc, n_a);
+      add(arc(C_R, r, 2 * q, 3 * q), line({x_1 + r, a}, K), line(P1, {x_1 + r, a}), line(M, K),
+          n_arc, n_a);
+      add(arc(C_R, r, 3 * q, 4 * q), line(K, {x_1 - a, -r}), line(M, K), line(P2, {x_1 - a, -r}),
+          n_arc, n_a);
     }
     // Inlet and outlet blocks.
     rectangle(0, x_0 - r, 0, a, n_in, n_a);
@@ -148,9 +157,8 @@ namespace fvfsi
 
     // Patches: 0 inlet, 1 outlet, 2 walls, 3 interface (cavity floor). Arc faces: manifolds 1, 2.
     const double tol = 1e-9;
-    const auto on_circle = [&](const Point<2>& p, const Point<2>& c) {
-      return std::abs(p.distance(c) - r) < tol;
-    };
+    const auto on_circle = [&](const Point<2>& p, const Point<2>& c)
+    { return std::abs(p.distance(c) - r) < tol; };
     for (const auto& face : tria.active_face_iterators())
       if (face->at_boundary())
       {
@@ -175,7 +183,8 @@ namespace fvfsi
     const double h = cell_size("fvfsi_cavity_plate", arguments);
     const unsigned int n_x = static_cast<unsigned int>(std::round(4 / h));
     const unsigned int n_y = std::max(2u, static_cast<unsigned int>(std::round(0.4 / h)));
-    GridGenerator::subdivided_hyper_rectangle(tria, {n_x, n_y}, Point<2>(2, -1.4), Point<2>(6, -1), true);
+    GridGenerator::subdivided_hyper_rectangle(tria, {n_x, n_y}, Point<2>(2, -1.4), Point<2>(6, -1),
+                                              true);
     // colorize: 0 x = 2, 1 x = 6, 2 y = -1.4, 3 y = -1 -> 0 clamped, 1 bottom, 2 interface.
     for (const auto& face : tria.active_face_iterators())
       if (face->at_boundary())

@@ -18,14 +18,15 @@ namespace fvfsi
     /// Vertex indices of face f of a cell in cyclic order (deal.II numbers face vertices
     /// lexicographically; (0, 1, 3, 2) walks a quad's boundary).
     template <int dim, typename Array>
-    std::array<unsigned int, GeometryInfo<dim>::vertices_per_face> face_polygon(const Array& cell_vertices,
-                                                                              const unsigned int f)
+    std::array<unsigned int, GeometryInfo<dim>::vertices_per_face>
+    face_polygon(const Array& cell_vertices, const unsigned int f)
     {
       constexpr unsigned int nv = GeometryInfo<dim>::vertices_per_face;
       constexpr std::array<unsigned int, 4> cyclic = {{0, 1, 3, 2}};
       std::array<unsigned int, nv> polygon;
       for (unsigned int i = 0; i < nv; ++i)
-        polygon[i] = cell_vertices[GeometryInfo<dim>::face_to_cell_vertices(f, dim == 2 ? i : cyclic[i])];
+        polygon[i] =
+          cell_vertices[GeometryInfo<dim>::face_to_cell_vertices(f, dim == 2 ? i : cyclic[i])];
       return polygon;
     }
 
@@ -45,7 +46,7 @@ namespace fvfsi
 
   template <int dim>
   FVGeometry<dim>::FVGeometry(const parallel::distributed::Triangulation<dim>& tria)
-    : tria(tria), fe(0), dofs(tria)
+      : tria(tria), fe(0), dofs(tria)
   {
     number_cells();
     reinit(tria.get_vertices());
@@ -57,8 +58,8 @@ namespace fvfsi
     dofs.distribute_dofs(fe);
     IndexSet relevant;
     DoFTools::extract_locally_relevant_dofs(dofs, relevant);
-    cell_partitioner = std::make_shared<Utilities::MPI::Partitioner>(dofs.locally_owned_dofs(),
-                                                                       relevant, tria.get_communicator());
+    cell_partitioner = std::make_shared<Utilities::MPI::Partitioner>(
+      dofs.locally_owned_dofs(), relevant, tria.get_communicator());
     n_owned = cell_partitioner->locally_owned_size();
     const unsigned int n_relevant = n_owned + cell_partitioner->n_ghost_indices();
     cells.resize(n_relevant);
@@ -93,7 +94,8 @@ namespace fvfsi
   template <int dim>
   void FVGeometry<dim>::collect_faces()
   {
-    const auto local = [this](const auto& cell) {
+    const auto local = [this](const auto& cell)
+    {
       std::vector<types::global_dof_index> dof(1);
       cell->get_dof_indices(dof);
       return cell_partitioner->global_to_local(dof[0]);
@@ -206,7 +208,8 @@ namespace fvfsi
       for (unsigned int i = 0; i < nv; ++i)
       {
         const unsigned int j = (i + 1) % nv;
-        const Tensor<1, dim> m_L = cross_product_3d(x[face.vertices[j]] - x[face.vertices[i]], face.n);
+        const Tensor<1, dim> m_L =
+          cross_product_3d(x[face.vertices[j]] - x[face.vertices[i]], face.n);
         face.tangential_weight[i] += m_L / (2 * face.area);
         face.tangential_weight[j] += m_L / (2 * face.area);
       }
@@ -236,7 +239,9 @@ namespace fvfsi
     // Eq. 37 summed over this face's pieces, written as weights of the vertex values.
     for (unsigned int i = 0; i < nv; ++i)
       face.gauss_green_weight[i] =
-        dim == 2 ? 0.5 * face.S : face.S / (3.0 * nv) + (pieces.S[i % pieces.n] + pieces.S[(i + nv - 1) % pieces.n]) * third;
+        dim == 2 ? 0.5 * face.S
+                 : face.S / (3.0 * nv) +
+                     (pieces.S[i % pieces.n] + pieces.S[(i + nv - 1) % pieces.n]) * third;
 
     set_tangential_weights(face);
 

@@ -27,7 +27,8 @@ namespace fvfsi
     }
 
     template <int dim>
-    void read_mesh_file(const std::string& file, Triangulation<dim>& tria, const std::string& section)
+    void read_mesh_file(const std::string& file, Triangulation<dim>& tria,
+                        const std::string& section)
     {
       std::ifstream in(file);
       if (!in)
@@ -48,7 +49,8 @@ namespace fvfsi
       }
       catch (const std::exception& e)
       {
-        throw std::runtime_error(section + "/File name: cannot read `" + file + "`: " + concise_message(e));
+        throw std::runtime_error(section + "/File name: cannot read `" + file +
+                                 "`: " + concise_message(e));
       }
     }
 
@@ -73,7 +75,8 @@ namespace fvfsi
         std::memcpy(&bits, &x, sizeof bits);
         h = mix(h ^ bits);
       }
-      const auto uniform = [&h]() {
+      const auto uniform = [&h]()
+      {
         h = mix(h);
         return (h >> 11) * (1.0 / 9007199254740992.0);
       };
@@ -86,7 +89,8 @@ namespace fvfsi
       }
       else
       {
-        const double cos_theta = 2 * uniform() - 1, sin_theta = std::sqrt(1 - cos_theta * cos_theta);
+        const double cos_theta = 2 * uniform() - 1,
+                     sin_theta = std::sqrt(1 - cos_theta * cos_theta);
         dir[0] = sin_theta * std::cos(phi);
         dir[1] = sin_theta * std::sin(phi);
         dir[dim - 1] = cos_theta;
@@ -96,8 +100,8 @@ namespace fvfsi
   } // namespace
 
   template <int dim>
-  void distort_interior_vertices(parallel::distributed::Triangulation<dim>& tria, const double factor,
-                                 const unsigned int seed)
+  void distort_interior_vertices(parallel::distributed::Triangulation<dim>& tria,
+                                 const double factor, const unsigned int seed)
   {
     const unsigned int n = tria.n_vertices();
     std::vector<double> min_edge(n, std::numeric_limits<double>::max());
@@ -139,13 +143,15 @@ namespace fvfsi
     using Cell = typename parallel::distributed::Triangulation<dim>::active_cell_iterator;
     GridTools::exchange_cell_data_to_ghosts<Corners, parallel::distributed::Triangulation<dim>>(
       tria,
-      [](const Cell& cell) {
+      [](const Cell& cell)
+      {
         Corners x;
         for (const unsigned int v : cell->vertex_indices())
           x[v] = cell->vertex(v);
         return std_cxx17::optional<Corners>(x);
       },
-      [](const Cell& cell, const Corners& x) {
+      [](const Cell& cell, const Corners& x)
+      {
         for (const unsigned int v : cell->vertex_indices())
           cell->vertex(v) = x[v];
       });
@@ -177,8 +183,8 @@ namespace fvfsi
       catch (const std::exception& e)
       {
         throw std::runtime_error(params.section + "/Generator = `" + params.generator + "` with " +
-                                 params.section + "/Generator arguments = `" + params.generator_arguments +
-                                 "` failed: " + concise_message(e));
+                                 params.section + "/Generator arguments = `" +
+                                 params.generator_arguments + "` failed: " + concise_message(e));
       }
     }
     if (params.distortion > 0 && params.distort_coarse_mesh)
@@ -188,7 +194,8 @@ namespace fvfsi
     for (const auto& cell : tria.active_cell_iterators())
       if (!cell->is_artificial())
         for (const unsigned int f : cell->face_indices())
-          if (!cell->at_boundary(f) && (cell->face(f)->has_children() || cell->neighbor_is_coarser(f)))
+          if (!cell->at_boundary(f) &&
+              (cell->face(f)->has_children() || cell->neighbor_is_coarser(f)))
             throw std::runtime_error("the mesh has hanging faces; fvfsi needs a conforming mesh");
     if (params.distortion > 0 && !params.distort_coarse_mesh)
       distort_interior_vertices(tria, params.distortion, params.distortion_seed);

@@ -8,31 +8,39 @@ namespace fvfsi
   {
     this->section = section;
     prm.enter_subsection(section);
-    prm.add_parameter("Generator", generator,
-                      "Name of a deal.II GridGenerator function (hyper_cube, subdivided_hyper_rectangle, "
-                      "hyper_shell, plate_with_a_hole, channel_with_cylinder, ...), or `file` to read "
-                      "`File name`.");
-    prm.add_parameter("Generator arguments", generator_arguments,
-                      "Arguments of the GridGenerator function, separated by `:` (points as `x, y`), "
-                      "as GridGenerator::generate_from_name_and_arguments reads them.");
-    prm.add_parameter("File name", file_name,
-                      "Mesh file read when Generator = file: Gmsh .msh, UCD .inp or VTK .vtk. A relative "
-                      "name is taken relative to the directory of the .prm file.");
-    prm.add_parameter("Global refinements", n_global_refinements,
-                      "Number of uniform refinements of the coarse mesh (curved manifolds are kept).",
-                      dealii::Patterns::Integer(0, 12));
-    prm.add_parameter("Distortion", distortion,
-                      "Random shift of every interior vertex, as a fraction of its shortest adjacent edge "
-                      "(for tests on irregular meshes; 0 = none, keep below 0.4).",
-                      dealii::Patterns::Double(0., 0.45));
-    prm.add_parameter("Distort coarse mesh", distort_coarse_mesh,
-                      "true: distort the coarse mesh (GridTools::distort_random) and refine it, so "
-                      "that the meshes of a refinement sweep are subdivisions of one distorted mesh; "
-                      "false: distort the refined mesh, a new random mesh on every level.");
-    prm.add_parameter("Distortion seed", distortion_seed, "Seed of the distortion's random numbers.");
-    prm.add_parameter("Patch names", patch_names,
-                      "Names of the boundary ids, e.g. `0: left, 1: right`; boundary conditions refer to "
-                      "patches by these names. An id without a name is called patch_<id>.");
+    prm.add_parameter(
+      "Generator", generator,
+      "Name of a deal.II GridGenerator function (hyper_cube, subdivided_hyper_rectangle, "
+      "hyper_shell, plate_with_a_hole, channel_with_cylinder, ...), or `file` to read "
+      "`File name`.");
+    prm.add_parameter(
+      "Generator arguments", generator_arguments,
+      "Arguments of the GridGenerator function, separated by `:` (points as `x, y`), "
+      "as GridGenerator::generate_from_name_and_arguments reads them.");
+    prm.add_parameter(
+      "File name", file_name,
+      "Mesh file read when Generator = file: Gmsh .msh, UCD .inp or VTK .vtk. A relative "
+      "name is taken relative to the directory of the .prm file.");
+    prm.add_parameter(
+      "Global refinements", n_global_refinements,
+      "Number of uniform refinements of the coarse mesh (curved manifolds are kept).",
+      dealii::Patterns::Integer(0, 12));
+    prm.add_parameter(
+      "Distortion", distortion,
+      "Random shift of every interior vertex, as a fraction of its shortest adjacent edge "
+      "(for tests on irregular meshes; 0 = none, keep below 0.4).",
+      dealii::Patterns::Double(0., 0.45));
+    prm.add_parameter(
+      "Distort coarse mesh", distort_coarse_mesh,
+      "true: distort the coarse mesh (GridTools::distort_random) and refine it, so "
+      "that the meshes of a refinement sweep are subdivisions of one distorted mesh; "
+      "false: distort the refined mesh, a new random mesh on every level.");
+    prm.add_parameter("Distortion seed", distortion_seed,
+                      "Seed of the distortion's random numbers.");
+    prm.add_parameter(
+      "Patch names", patch_names,
+      "Names of the boundary ids, e.g. `0: left, 1: right`; boundary conditions refer to "
+      "patches by these names. An id without a name is called patch_<id>.");
     prm.leave_subsection();
   }
 
@@ -52,6 +60,7 @@ namespace fvfsi
     std::string known;
     for (const auto& [id, n] : patch_names)
       known += " " + n;
-    throw std::runtime_error("unknown patch `" + name + "` (" + section + "/Patch names has:" + known + ")");
+    throw std::runtime_error("unknown patch `" + name + "` (" + section +
+                             "/Patch names has:" + known + ")");
   }
 } // namespace fvfsi

@@ -44,7 +44,8 @@ namespace fvfsi
     /// 3D: flux of x through the bilinear patch x(s, t) = (1-t)((1-s) a + s b) + t((1-s) a' + s b')
     /// traced by the edge a -> b, normal x_s x x_t. The integrand is of degree 2 in s and in t, so
     /// 2 x 2 Gauss points integrate it exactly; swapping a and b flips the sign.
-    double patch_flux(const Point<3>& a, const Point<3>& b, const Point<3>& a_new, const Point<3>& b_new)
+    double patch_flux(const Point<3>& a, const Point<3>& b, const Point<3>& a_new,
+                      const Point<3>& b_new)
     {
       const double g = 0.5 / std::sqrt(3.0);
       const std::array<double, 2> q = {{0.5 - g, 0.5 + g}};
@@ -52,7 +53,8 @@ namespace fvfsi
       for (const double s : q)
         for (const double t : q)
         {
-          const Tensor<1, 3> x = (1 - t) * ((1 - s) * a + s * b) + t * ((1 - s) * a_new + s * b_new);
+          const Tensor<1, 3> x =
+            (1 - t) * ((1 - s) * a + s * b) + t * ((1 - s) * a_new + s * b_new);
           const Tensor<1, 3> x_s = (1 - t) * (b - a) + t * (b_new - a_new);
           const Tensor<1, 3> x_t = (1 - s) * (a_new - a) + s * (b_new - b);
           flux += 0.25 * (x * cross_product_3d(x_s, x_t));

@@ -55,9 +55,9 @@ namespace fvfsi
         if (face->at_boundary())
         {
           const Point<2> c = face->center();
-          face->set_boundary_id(std::abs(c[0]) < tol                                 ? 0
-                                : std::abs(c[0] - L) < tol                           ? 1
-                                : std::abs(c[1]) < tol || std::abs(c[1] - H) < tol   ? 2
+          face->set_boundary_id(std::abs(c[0]) < tol                                       ? 0
+                                : std::abs(c[0] - L) < tol                                 ? 1
+                                : std::abs(c[1]) < tol || std::abs(c[1] - H) < tol         ? 2
                                 : on_circle(face->vertex(0)) && on_circle(face->vertex(1)) ? 3
                                                                                            : 4);
         }
@@ -71,7 +71,8 @@ namespace fvfsi
       x.push_back(Utilities::string_to_double(s));
     if (x.empty() || x.size() > 2 || x[0] < 4)
       throw std::runtime_error("fvfsi_turek_hron_channel needs `n[: grading]` with n >= 4 (cells "
-                               "on a quarter of the cylinder), got `" + arguments + "`");
+                               "on a quarter of the cylinder), got `" +
+                               arguments + "`");
     const unsigned int n = static_cast<unsigned int>(x[0]);
     const double beta = x.size() > 1 ? x[1] : 1.5; // radial grading towards the cylinder
     // The function is one list of blocks (rings about the cylinder, rectangles around the flag
@@ -85,9 +86,8 @@ namespace fvfsi
 
     // Subdivisions: the cell size on the box sides, h = 0.2 / n, sets the rest.
     const double h = (box_hi - box_lo) / n;
-    const auto cells = [h](const double length) {
-      return std::max(1u, static_cast<unsigned int>(std::round(length / h)));
-    };
+    const auto cells = [h](const double length)
+    { return std::max(1u, static_cast<unsigned int>(std::round(length / h))); };
     const unsigned int n_radial = std::max(2u, n / 2), n_side = cells(y_lo - box_lo),
                        n_flag = std::max(2u, cells(y_hi - y_lo)), n_left = cells(box_lo),
                        n_bottom = cells(box_lo), n_top = cells(H - box_hi),
@@ -101,26 +101,30 @@ namespace fvfsi
 
     std::vector<std::unique_ptr<Triangulation<2>>> blocks;
     const auto add = [&](const Curve& b, const Curve& t, const Curve& l, const Curve& r,
-                         unsigned int n_s, unsigned int n_t, double beta_s, double beta_t) {
+                         unsigned int n_s, unsigned int n_t, double beta_s, double beta_t)
+    {
       blocks.push_back(std::make_unique<Triangulation<2>>());
       make_block(*blocks.back(), b, t, l, r, n_s, n_t, beta_s, beta_t);
     };
     // Ring blocks: s along the arc, t from the circle (t = 0) to the square (t = 1). The grading
     // in t makes the cells next to the cylinder thinner.
-    const auto ring = [&](double a0, double a1, Point<2> p0, Point<2> p1, unsigned int n_s) {
+    const auto ring = [&](double a0, double a1, Point<2> p0, Point<2> p1, unsigned int n_s)
+    {
       add(arc(C, R, a0, a1), line(p0, p1), line(arc(C, R, a0, a1)(0), p0),
           line(arc(C, R, a0, a1)(1), p1), n_s, n_radial, 0, beta);
     };
-    const Point<2> b00(box_lo, box_lo), b10(box_hi, box_lo), b01(box_lo, box_hi), b11(box_hi, box_hi);
-    ring(q, 3 * q, b11, b01, n);                                 // top
-    ring(3 * q, 5 * q, b01, b00, n);                             // left
-    ring(5 * q, 7 * q, b00, b10, n);                             // bottom
-    ring(flag_angle, q, Point<2>(box_hi, y_hi), b11, n_side);    // right, above the flag
-    ring(-q, -flag_angle, b10, Point<2>(box_hi, y_lo), n_side);  // right, below the flag
+    const Point<2> b00(box_lo, box_lo), b10(box_hi, box_lo), b01(box_lo, box_hi),
+      b11(box_hi, box_hi);
+    ring(q, 3 * q, b11, b01, n);                                // top
+    ring(3 * q, 5 * q, b01, b00, n);                            // left
+    ring(5 * q, 7 * q, b00, b10, n);                            // bottom
+    ring(flag_angle, q, Point<2>(box_hi, y_hi), b11, n_side);   // right, above the flag
+    ring(-q, -flag_angle, b10, Point<2>(box_hi, y_lo), n_side); // right, below the flag
 
     // Straight blocks [x0, x1] x [y0, y1] with n_x x n_y cells.
     const auto rectangle = [&](double x0, double x1, double y0, double y1, unsigned int n_x,
-                               unsigned int n_y, double beta_x) {
+                               unsigned int n_y, double beta_x)
+    {
       add(line({x0, y0}, {x1, y0}), line({x0, y1}, {x1, y1}), line({x0, y0}, {x0, y1}),
           line({x1, y0}, {x1, y1}), n_x, n_y, beta_x, 0);
     };

@@ -66,10 +66,9 @@ namespace fvfsi
                               const FluidSceneParameters& scene_parameters,
                               const TimeParameters& time, MPI_Comm comm,
                               const std::string& prm_directory, const std::string& output_directory)
-    : Base(mesh_parameters, time, scene_parameters, "Fluid scene/Probes", comm, prm_directory,
-           output_directory)
-    , fluid_parameters(fluid_parameters)
-    , scene_parameters(scene_parameters)
+      : Base(mesh_parameters, time, scene_parameters, "Fluid scene/Probes", comm, prm_directory,
+             output_directory),
+        fluid_parameters(fluid_parameters), scene_parameters(scene_parameters)
   {
   }
 
@@ -81,10 +80,10 @@ namespace fvfsi
     if (scene_parameters.mesh_motion.moves())
     {
       if (!fluid_parameters.transient)
-        throw std::runtime_error("Mesh motion/Type = " +
-                                 selection_name(MeshMotionParameters::type_names,
-                                                scene_parameters.mesh_motion.type) +
-                                 " needs a transient flow (Fluid/Transient = true)");
+        throw std::runtime_error(
+          "Mesh motion/Type = " +
+          selection_name(MeshMotionParameters::type_names, scene_parameters.mesh_motion.type) +
+          " needs a transient flow (Fluid/Transient = true)");
       reference_fv = std::make_unique<FVGeometry<dim>>(triangulation);
       motion = std::make_unique<MeshMotion<dim>>(*reference_fv, mesh_parameters,
                                                  scene_parameters.mesh_motion, clock);
@@ -120,17 +119,21 @@ namespace fvfsi
   std::pair<Tensor<1, dim>, double> FluidScene<dim>::probe_values(const unsigned int i) const
   {
     const Tensor<1, dim> u = probes.template evaluate<Tensor<1, dim>>(
-      i, [this](const unsigned int c, const Tensor<1, dim>& dx) {
+      i,
+      [this](const unsigned int c, const Tensor<1, dim>& dx)
+      {
         Tensor<1, dim> value = fluid->velocity()[c];
         for (unsigned int j = 0; j < dim; ++j)
           value[j] += dx * fluid->velocity_gradient(j)[c];
         return value;
       });
-    const double p = probes.template evaluate<double>(
-      i, [this](const unsigned int c, const Tensor<1, dim>& dx) {
-        return fluid->kinematic_pressure().local_element(c) +
-               dx * fluid->kinematic_pressure_gradient()[c];
-      });
+    const double p =
+      probes.template evaluate<double>(i,
+                                       [this](const unsigned int c, const Tensor<1, dim>& dx)
+                                       {
+                                         return fluid->kinematic_pressure().local_element(c) +
+                                                dx * fluid->kinematic_pressure_gradient()[c];
+                                       });
     return {u, fluid_parameters.rho * p};
   }
 
@@ -180,9 +183,8 @@ namespace fvfsi
       // Without an outlet the pressure is known up to a constant: compare p - mean(p).
       const CellErrors e = this->cell_errors(
         scene_parameters.exact_pressure, "Fluid scene/Exact pressure", 1,
-        [this](const unsigned int c, unsigned int) {
-          return fluid_parameters.rho * fluid->kinematic_pressure().local_element(c);
-        },
+        [this](const unsigned int c, unsigned int)
+        { return fluid_parameters.rho * fluid->kinematic_pressure().local_element(c); },
         !fluid->pressure_level_is_fixed());
       result.max_pressure_error = e.max;
       result.l2_pressure_error = e.l2;
@@ -201,7 +203,8 @@ namespace fvfsi
       fluid->begin_time_step();
       result.n_time_steps = fluid->solve_steady();
       record_time_history();
-      pcout << "fvfsi: fluid steady solution after " << result.n_time_steps << " pseudo time steps\n";
+      pcout << "fvfsi: fluid steady solution after " << result.n_time_steps
+            << " pseudo time steps\n";
       this->write_output(*fluid);
     }
     else
@@ -235,7 +238,8 @@ namespace fvfsi
         pcout << "fvfsi: fluid step " << step << "/" << total << ", t = " << clock.time()
               << " s, Courant " << fluid->courant_number() << ", drag " << history_drag.back()
               << ", lift " << history_lift.back()
-              << (motion ? ", min V/V_ref " + std::to_string(result.min_volume_ratio) : std::string())
+              << (motion ? ", min V/V_ref " + std::to_string(result.min_volume_ratio)
+                         : std::string())
               << "\n";
       if (this->output_due(step))
         this->write_output(*fluid);
@@ -288,9 +292,10 @@ namespace fvfsi
       summary.set_result("drag_mean_amplitude_frequency", {d.mean, d.amplitude, d.frequency});
       summary.set_result("lift_mean_amplitude_frequency", {l.mean, l.amplitude, l.frequency});
       if (d.n_periods == 0 || l.n_periods == 0)
-        summary.set_text_result("periodic_statistics_note",
-                           "null: the last " + Utilities::to_string(scene_parameters.analysis_window) +
-                             " s (Fluid scene/Analysis window) hold no full period of drag or lift");
+        summary.set_text_result(
+          "periodic_statistics_note",
+          "null: the last " + Utilities::to_string(scene_parameters.analysis_window) +
+            " s (Fluid scene/Analysis window) hold no full period of drag or lift");
     }
   }
 

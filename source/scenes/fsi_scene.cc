@@ -12,7 +12,8 @@ namespace fvfsi
 
   namespace
   {
-    std::vector<unsigned int> patch_ids(const MeshParameters& mesh, const std::vector<std::string>& names)
+    std::vector<unsigned int> patch_ids(const MeshParameters& mesh,
+                                        const std::vector<std::string>& names)
     {
       std::vector<unsigned int> ids;
       for (const auto& name : names)
@@ -24,29 +25,22 @@ namespace fvfsi
   template <int dim>
   FsiScene<dim>::FsiScene(const FsiSceneInput& input, MPI_Comm comm,
                           const std::string& prm_directory, const std::string& output_directory)
-    : comm(comm)
-    , fluid_mesh_parameters(input.fluid_mesh)
-    , solid_mesh_parameters(input.solid_mesh)
-    , fluid_parameters(input.fluid)
-    , fluid_scene_parameters(input.fluid_scene)
-    , solid_parameters(input.solid)
-    , solid_scene_parameters(input.solid_scene)
-    , prm(input.fsi)
-    , prm_directory(prm_directory)
-    , output_directory(output_directory)
-    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
-    , timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
-    , clock(input.time)
-    , fluid_tria(comm)
-    , solid_tria(comm)
-    , probes(input.solid_scene.probes, "Solid scene/Probes")
+      : comm(comm), fluid_mesh_parameters(input.fluid_mesh),
+        solid_mesh_parameters(input.solid_mesh), fluid_parameters(input.fluid),
+        fluid_scene_parameters(input.fluid_scene), solid_parameters(input.solid),
+        solid_scene_parameters(input.solid_scene), prm(input.fsi), prm_directory(prm_directory),
+        output_directory(output_directory),
+        pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0),
+        timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times), clock(input.time),
+        fluid_tria(comm), solid_tria(comm), probes(input.solid_scene.probes, "Solid scene/Probes")
   {
     if (!fluid_parameters.transient)
       throw std::runtime_error("FSI: the fluid must be transient (Fluid/Transient = true)");
     if (fluid_scene_parameters.mesh_motion.type != MeshMotionParameters::Type::laplace)
-      throw std::runtime_error("FSI: the fluid mesh must follow the interface: set Mesh motion/Type = "
-                               "Laplace and list the fluid interface patches in Mesh motion/Moving "
-                               "patches");
+      throw std::runtime_error(
+        "FSI: the fluid mesh must follow the interface: set Mesh motion/Type = "
+        "Laplace and list the fluid interface patches in Mesh motion/Moving "
+        "patches");
     if (prm.coupling.fluid_interface.empty() || prm.coupling.solid_interface.empty())
       throw std::runtime_error("FSI: name the interface patches (Coupling/Fluid interface and "
                                "Coupling/Solid interface)");
@@ -58,13 +52,15 @@ namespace fvfsi
     make_mesh(fluid_mesh_parameters, fluid_tria, prm_directory);
     fluid_fv = std::make_unique<FVGeometry<dim>>(fluid_tria);
     fluid_reference_fv = std::make_unique<FVGeometry<dim>>(fluid_tria);
-    fluid = std::make_unique<FluidSolver<dim>>(*fluid_fv, fluid_mesh_parameters, fluid_parameters, clock);
+    fluid =
+      std::make_unique<FluidSolver<dim>>(*fluid_fv, fluid_mesh_parameters, fluid_parameters, clock);
     motion = std::make_unique<MeshMotion<dim>>(*fluid_reference_fv, fluid_mesh_parameters,
                                                fluid_scene_parameters.mesh_motion, clock);
 
     make_mesh(solid_mesh_parameters, solid_tria, prm_directory);
     solid_fv = std::make_unique<FVGeometry<dim>>(solid_tria);
-    solid = std::make_unique<SolidSolver<dim>>(*solid_fv, solid_mesh_parameters, solid_parameters, clock);
+    solid =
+      std::make_unique<SolidSolver<dim>>(*solid_fv, solid_mesh_parameters, solid_parameters, clock);
     probes.locate(*solid_fv);
   }
 
@@ -74,9 +70,11 @@ namespace fvfsi
     // The interface, whole on every rank, and the maps between its two sides (computed once,
     // on the undeformed meshes, where the two sides coincide).
     fluid_zone = std::make_unique<InterfaceZone<dim>>(
-      *fluid_fv, patch_ids(fluid_mesh_parameters, prm.coupling.fluid_interface), "Coupling/Fluid interface");
+      *fluid_fv, patch_ids(fluid_mesh_parameters, prm.coupling.fluid_interface),
+      "Coupling/Fluid interface");
     solid_zone = std::make_unique<InterfaceZone<dim>>(
-      *solid_fv, patch_ids(solid_mesh_parameters, prm.coupling.solid_interface), "Coupling/Solid interface");
+      *solid_fv, patch_ids(solid_mesh_parameters, prm.coupling.solid_interface),
+      "Coupling/Solid interface");
     traction_map = std::make_unique<FaceInterpolation<dim>>(*fluid_zone, *solid_zone);
     displacement_map = std::make_unique<VertexProjection<dim>>(*solid_zone, *fluid_zone);
     acceleration = std::make_unique<CouplingAcceleration>(prm.coupling);
@@ -89,7 +87,8 @@ namespace fvfsi
   {
     fluid_output = std::make_unique<VtuOutput<dim>>(*fluid_fv, output_directory, "fluid");
     solid_output = std::make_unique<VtuOutput<dim>>(*solid_fv, output_directory, "solid");
-    std::vector<std::string> columns = {"t", "coupling_iterations", "relative_residual", "drag", "lift"};
+    std::vector<std::string> columns = {"t", "coupling_iterations", "relative_residual", "drag",
+                                        "lift"};
     for (unsigned int i = 0; i < probes.size(); ++i)
       for (const auto& c : vector_columns<dim>("u", "_" + probes.name(i)))
         columns.push_back(c);
@@ -112,7 +111,8 @@ namespace fvfsi
         motion->set_patch_displacement(patch, vertex_displacement);
       }
     }
-    const std::vector<Point<dim>> x = [&] {
+    const std::vector<Point<dim>> x = [&]
+    {
       TimerOutput::Scope scope(timer, "mesh motion");
       return motion->vertex_positions();
     }();
@@ -125,8 +125,8 @@ namespace fvfsi
       if (!cell->is_artificial())
         for (const unsigned int v : cell->vertex_indices())
           cell->vertex(v) = x[cell->vertex_index(v)];
-    result.min_volume_ratio = std::min(result.min_volume_ratio,
-                                       min_volume_ratio(*fluid_fv, *fluid_reference_fv, clock.time()));
+    result.min_volume_ratio = std::min(
+      result.min_volume_ratio, min_volume_ratio(*fluid_fv, *fluid_reference_fv, clock.time()));
     fluid->move_mesh(swept);
   }
 
@@ -195,8 +195,9 @@ namespace fvfsi
       {
         throw std::runtime_error(
           "FSI: at " + clock.step_name() + ", coupling iteration " + std::to_string(k) +
-          (k > 1 ? " (relative interface residual before it: " + Utilities::to_string(residual) + ")"
-                 : std::string()) +
+          (k > 1
+             ? " (relative interface residual before it: " + Utilities::to_string(residual) + ")"
+             : std::string()) +
           ": " + e.what() +
           (k > 2 ? "\n(a coupling iteration that diverges ends like this: use Coupling/Method = "
                    "IQN-ILS or Aitken, or a smaller Coupling/Relaxation)"
@@ -204,8 +205,8 @@ namespace fvfsi
       }
       residual = acceleration->relative_residual();
       if (!std::isfinite(residual))
-        throw std::runtime_error("FSI: the interface residual is not finite at " + clock.step_name() +
-                                 ", coupling iteration " + std::to_string(k));
+        throw std::runtime_error("FSI: the interface residual is not finite at " +
+                                 clock.step_name() + ", coupling iteration " + std::to_string(k));
       if (residual <= prm.coupling.tolerance)
       {
         // 3: accept the step.
@@ -282,8 +283,9 @@ namespace fvfsi
       }
       catch (...)
       {
-        pcout << "fvfsi: FSI run stopped at time step " << step << "; fsi_history.txt holds every "
-              << "converged time step before it (and the VTU files of Fluid scene/Output interval)\n";
+        pcout
+          << "fvfsi: FSI run stopped at time step " << step << "; fsi_history.txt holds every "
+          << "converged time step before it (and the VTU files of Fluid scene/Output interval)\n";
         throw;
       }
       result.n_time_steps = step;
@@ -293,7 +295,8 @@ namespace fvfsi
         pcout << "fvfsi: FSI step " << step << "/" << total << ", t = " << clock.time() << " s, "
               << iterations << " coupling iterations (mean "
               << double(result.total_coupling_iterations) / step << ")\n";
-      if (fluid_scene_parameters.output_interval > 0 && step % fluid_scene_parameters.output_interval == 0)
+      if (fluid_scene_parameters.output_interval > 0 &&
+          step % fluid_scene_parameters.output_interval == 0)
         output_results();
     }
     if (fluid_scene_parameters.output_interval == 0)

@@ -19,9 +19,10 @@ namespace fvfsi
     prm.enter_subsection("Poisson");
     prm.add_parameter("Diffusivity", diffusivity, "Gamma in -div(Gamma grad phi) = s [m^2/s].",
                       Patterns::Double(0));
-    prm.add_parameter("Exact solution", exact_solution,
-                      "phi(x, y[, z]) (FunctionParser syntax, constant pi): the Dirichlet values and "
-                      "the reference of the error norms.");
+    prm.add_parameter(
+      "Exact solution", exact_solution,
+      "phi(x, y[, z]) (FunctionParser syntax, constant pi): the Dirichlet values and "
+      "the reference of the error norms.");
     prm.add_parameter("Exact gradient", exact_gradient,
                       "grad phi, dim expressions separated by `;`: the Neumann values and the "
                       "reference of the face-gradient error.");
@@ -41,9 +42,10 @@ namespace fvfsi
     prm.add_parameter("Max correction iterations", max_correction_iterations,
                       "Limit of the deferred non-orthogonal correction iterations.",
                       Patterns::Integer(1));
-    prm.add_parameter("Correction tolerance", correction_tolerance,
-                      "Stop the correction iterations when max |phi change| / max |phi| is below this.",
-                      Patterns::Double(0));
+    prm.add_parameter(
+      "Correction tolerance", correction_tolerance,
+      "Stop the correction iterations when max |phi change| / max |phi| is below this.",
+      Patterns::Double(0));
     prm.leave_subsection();
     solver.declare(prm, "Poisson linear solver");
   }
@@ -52,15 +54,9 @@ namespace fvfsi
   PoissonProblem<dim>::PoissonProblem(const MeshParameters& mesh_parameters,
                                       const PoissonParameters& parameters, MPI_Comm comm,
                                       const std::string& prm_directory)
-    : comm(comm)
-    , mesh_parameters(mesh_parameters)
-    , parameters(parameters)
-    , prm_directory(prm_directory)
-    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
-    , triangulation(comm)
-    , exact(1)
-    , exact_gradient(dim)
-    , source(1)
+      : comm(comm), mesh_parameters(mesh_parameters), parameters(parameters),
+        prm_directory(prm_directory), pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0),
+        triangulation(comm), exact(1), exact_gradient(dim), source(1)
   {
     initialize_function(exact, parameters.exact_solution, "Poisson/Exact solution");
     initialize_function(exact_gradient, parameters.exact_gradient, "Poisson/Exact gradient");
@@ -144,7 +140,8 @@ namespace fvfsi
     control.tolerance = parameters.correction_tolerance;
     const auto r = solve_deferred_correction(
       control, solver, matrix, rhs_fixed, phi,
-      [this](CellVector& rhs) { laplacian->add_correction(gamma, bc, grad, rhs, hessian_or_null()); },
+      [this](CellVector& rhs)
+      { laplacian->add_correction(gamma, bc, grad, rhs, hessian_or_null()); },
       [this]() { update_gradients(); }, "Poisson phi");
     result.correction_iterations = r.iterations;
     result.linear_iterations = r.linear_iterations;
@@ -173,7 +170,8 @@ namespace fvfsi
   template <int dim>
   void PoissonProblem<dim>::compute_errors()
   {
-    double max_error = 0, l2 = 0, l2_gradient = 0, max_boundary_gradient_error = 0, max_gradient_error = 0, volume = 0;
+    double max_error = 0, l2 = 0, l2_gradient = 0, max_boundary_gradient_error = 0,
+           max_gradient_error = 0, volume = 0;
     for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
     {
       const double e = phi.local_element(c) - exact.value(fv->centroid[c]);
@@ -201,7 +199,8 @@ namespace fvfsi
     result.l2_cell_error = std::sqrt(Utilities::MPI::sum(l2, comm));
     result.max_face_gradient_error = Utilities::MPI::max(max_gradient_error, comm);
     result.l2_face_gradient_error = std::sqrt(Utilities::MPI::sum(l2_gradient, comm));
-    result.max_boundary_face_gradient_error = Utilities::MPI::max(max_boundary_gradient_error, comm);
+    result.max_boundary_face_gradient_error =
+      Utilities::MPI::max(max_boundary_gradient_error, comm);
   }
 
   template <int dim>
@@ -224,9 +223,8 @@ namespace fvfsi
     OutputFields<dim> fields(*fv);
     fields.add("phi", [&](const unsigned int c) { return phi.local_element(c); });
     fields.add("phi_exact", [&](const unsigned int c) { return exact.value(fv->centroid[c]); });
-    fields.add("error", [&](const unsigned int c) {
-      return phi.local_element(c) - exact.value(fv->centroid[c]);
-    });
+    fields.add("error", [&](const unsigned int c)
+               { return phi.local_element(c) - exact.value(fv->centroid[c]); });
     VtuOutput<dim>(*fv, directory, "poisson").write(fields, 0, 0.0);
     summary.set_result("max_cell_error", result.max_cell_error);
     summary.set_result("l2_cell_error", result.l2_cell_error);

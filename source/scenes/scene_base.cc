@@ -5,7 +5,8 @@ namespace fvfsi
 {
   using namespace dealii;
 
-  void SceneOutputParameters::declare_entries(ParameterHandler& prm, const std::string& probe_values,
+  void SceneOutputParameters::declare_entries(ParameterHandler& prm,
+                                              const std::string& probe_values,
                                               const std::string& force)
   {
     prm.add_parameter("Probes", probes,
@@ -28,15 +29,10 @@ namespace fvfsi
                                         const std::string& probe_parameter, MPI_Comm comm,
                                         const std::string& prm_directory,
                                         const std::string& output_directory)
-    : comm(comm)
-    , mesh_parameters(mesh_parameters)
-    , output_parameters(output)
-    , prm_directory(prm_directory)
-    , output_directory(output_directory)
-    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
-    , clock(time)
-    , triangulation(comm)
-    , probes(output.probes, probe_parameter)
+      : comm(comm), mesh_parameters(mesh_parameters), output_parameters(output),
+        prm_directory(prm_directory), output_directory(output_directory),
+        pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0), clock(time),
+        triangulation(comm), probes(output.probes, probe_parameter)
   {
   }
 

@@ -31,14 +31,14 @@ namespace fvfsi
   }
 
   template <int dim>
-  SolidScene<dim>::SolidScene(const MeshParameters& mesh_parameters, const SolidParameters& solid_parameters,
+  SolidScene<dim>::SolidScene(const MeshParameters& mesh_parameters,
+                              const SolidParameters& solid_parameters,
                               const SolidSceneParameters& scene_parameters,
                               const TimeParameters& time, MPI_Comm comm,
                               const std::string& prm_directory, const std::string& output_directory)
-    : Base(mesh_parameters, time, scene_parameters, "Solid scene/Probes", comm,
-                           prm_directory, output_directory)
-    , solid_parameters(solid_parameters)
-    , scene_parameters(scene_parameters)
+      : Base(mesh_parameters, time, scene_parameters, "Solid scene/Probes", comm, prm_directory,
+             output_directory),
+        solid_parameters(solid_parameters), scene_parameters(scene_parameters)
   {
   }
 
@@ -46,8 +46,7 @@ namespace fvfsi
   void SolidScene<dim>::make_grid()
   {
     this->make_mesh_and_writer("solid");
-    solid = std::make_unique<SolidSolver<dim>>(*fv, mesh_parameters, solid_parameters,
-                                               clock);
+    solid = std::make_unique<SolidSolver<dim>>(*fv, mesh_parameters, solid_parameters, clock);
     // The history: t, probe displacements, patch forces.
     std::vector<std::string> columns = {"t"};
     for (unsigned int i = 0; i < probes.size(); ++i)
@@ -89,10 +88,10 @@ namespace fvfsi
     if (!scene_parameters.exact_displacement.empty())
     {
       result.max_displacement_error =
-        this->cell_errors(scene_parameters.exact_displacement, "Solid scene/Exact displacement", dim,
-                          [this](const unsigned int c, const unsigned int d) {
-                            return solid->displacement()[c][d];
-                          })
+        this
+          ->cell_errors(scene_parameters.exact_displacement, "Solid scene/Exact displacement", dim,
+                        [this](const unsigned int c, const unsigned int d)
+                        { return solid->displacement()[c][d]; })
           .max;
     }
     if (!scene_parameters.exact_stress.empty())
@@ -165,7 +164,8 @@ namespace fvfsi
     for (const auto& [patch, e] : result.max_stress_error)
       summary.set_result("max_" + patch + "_stress_error", e);
     for (const auto& [name, u] : result.probe_displacement)
-      summary.set_result("point_" + name + "_displacement", std::vector<double>(&u[0], &u[0] + dim));
+      summary.set_result("point_" + name + "_displacement",
+                         std::vector<double>(&u[0], &u[0] + dim));
     summary.set_result("outer_iterations", result.total_outer_iterations);
     summary.set_result("time_steps", result.n_time_steps);
   }

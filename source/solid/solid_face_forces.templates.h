@@ -9,201 +9,202 @@
 
 namespace fvfsi
 {
-using namespace dealii;
-using Type = SolidBoundaryCondition::Type;
+  using namespace dealii;
+  using Type = SolidBoundaryCondition::Type;
 
-template <int dim>
-Tensor<2, dim> SolidSolver<dim>::face_gradient(const unsigned int f) const
-{
-  const auto& face = geometry.faces[f];
-  const bool boundary = face.N == invalid_cell;
-  if (boundary && takes_traction(conditions.type(f)))
-    return boundary_G[f]; // Eq. 24
-  const Tensor<2, dim> G_P = cell_gradient(face.P);
-  const Tensor<1, dim> u_P = u[face.P];
-  // Normal derivative vector g_n = n . grad u: Eq. 19 inside, Eq. 23 on displacement faces.
-  Tensor<1, dim> g_n;
-  if (boundary)
-    g_n = (boundary_u[f] - u_P - face.k_P * G_P) / face.d_n;
-  else
-  {
-    const Tensor<2, dim> G_N = cell_gradient(face.N);
-    g_n = (u[face.N] - u_P - face.k_N * G_N - face.k_P * G_P) / face.d_n;
-  }
-  if (parameters.variant == Variant::present)
-  {
-    // Tangential part from the vertex values (Eq. 39), also on boundary faces.
-    Tensor<2, dim> G = outer_product(face.n, g_n);
-    for (unsigned int j = 0; j < dim; ++j)
-    {
-      const Tensor<1, dim> t = tangential_gradient(face, vertex_u[j]);
-      for (unsigned int i = 0; i < dim; ++i)
-        G[i][j] += t[i];
-    }
-    return G;
-  }
-  // Demirdzic-Muzaferija and Jasak-Weller: the interpolated cell gradient (the cell's own at a
-  // boundary), with its normal part replaced by g_n.
-  const Tensor<2, dim> G_bar = boundary ? G_P : face.w * G_P + (1 - face.w) * cell_gradient(face.N);
-  return G_bar + outer_product(face.n, g_n - face.n * G_bar);
-}
-
-template <int dim>
-Tensor<1, dim> SolidSolver<dim>::boundary_traction(const unsigned int f,
-                                                   const Tensor<2, dim>& G) const
-{
-  // The force per reference area of a Cauchy traction t: t S'/S (Eq. 24), S'/S from Nanson.
-  const auto& face = geometry.faces[f];
-  const Type type = conditions.type(f);
-  const Tensor<1, dim> area_ratio_n = deformed_area_vector(G, face.n, lame);
-  if (type == Type::external_traction)
-    return area_ratio_n.norm() * external_traction[f];
-  if (type == Type::pressure)
-    return -given_traction[f][0] * area_ratio_n;
-  return area_ratio_n.norm() * given_traction[f];
-}
-
-template <int dim>
-void SolidSolver<dim>::evaluate_given_tractions()
-{
-  given_traction.resize(geometry.faces.size());
-  for (const unsigned int f : geometry.boundary_faces())
-  {
-    const Type type = conditions.type(f);
-    if (type == Type::pressure)
-      given_traction[f][0] = conditions.function(f).value(geometry.faces[f].centre);
-    else if (type == Type::traction)
-      for (unsigned int d = 0; d < dim; ++d)
-        given_traction[f][d] = conditions.function(f).value(geometry.faces[f].centre, d);
-  }
-}
-
-template <int dim>
-void SolidSolver<dim>::update_boundary_values()
-{
-  for (const unsigned int f : geometry.boundary_faces())
+  template <int dim>
+  Tensor<2, dim> SolidSolver<dim>::face_gradient(const unsigned int f) const
   {
     const auto& face = geometry.faces[f];
-    const Type type = conditions.type(f);
+    const bool boundary = face.N == invalid_cell;
+    if (boundary && takes_traction(conditions.type(f)))
+      return boundary_G[f]; // Eq. 24
     const Tensor<2, dim> G_P = cell_gradient(face.P);
-    const Tensor<1, dim> extrapolated = u[face.P] + face.k_P * G_P;
-    switch (type)
+    const Tensor<1, dim> u_P = u[face.P];
+    // Normal derivative vector g_n = n . grad u: Eq. 19 inside, Eq. 23 on displacement faces.
+    Tensor<1, dim> g_n;
+    if (boundary)
+      g_n = (boundary_u[f] - u_P - face.k_P * G_P) / face.d_n;
+    else
     {
-    case Type::fixed_displacement:
+      const Tensor<2, dim> G_N = cell_gradient(face.N);
+      g_n = (u[face.N] - u_P - face.k_N * G_N - face.k_P * G_P) / face.d_n;
+    }
+    if (parameters.variant == Variant::present)
     {
-      const auto& fn = conditions.function(f);
-      for (unsigned int d = 0; d < dim; ++d)
-        boundary_u[f][d] = fn.value(face.centre, d);
-      break;
+      // Tangential part from the vertex values (Eq. 39), also on boundary faces.
+      Tensor<2, dim> G = outer_product(face.n, g_n);
+      for (unsigned int j = 0; j < dim; ++j)
+      {
+        const Tensor<1, dim> t = tangential_gradient(face, vertex_u[j]);
+        for (unsigned int i = 0; i < dim; ++i)
+          G[i][j] += t[i];
+      }
+      return G;
     }
-    case Type::symmetry:
-    {
-      Tensor<1, dim> e = extrapolated;
-      if (cell_hessian)
-        e += boundary_quadratic_term[f];
-      boundary_u[f] = e - (e * face.n) * face.n;
-      break;
-    }
-    default:
-    {
-      // Eq. 24: K g_n = t S'/S - n . q, with n . q = n.(Sigma.F^T) - K n . grad u at the
-      // previous iterate; then u_b from Eq. 23.
-      const Tensor<2, dim>& G_old = boundary_G[f];
-      const Tensor<1, dim> n_q =
-          first_piola_traction(G_old, face.n, lame) - lame.K() * (face.n * G_old);
-      const Tensor<1, dim> g_n = (boundary_traction(f, G_old) - n_q) / lame.K();
-      Tensor<2, dim> T; // tangential part
-      if (parameters.variant == Variant::present)
-        for (unsigned int j = 0; j < dim; ++j)
-        {
-          const Tensor<1, dim> t = tangential_gradient(face, vertex_u[j]);
-          for (unsigned int i = 0; i < dim; ++i)
-            T[i][j] = t[i];
-        }
-      else
-        T = G_P - outer_product(face.n, face.n * G_P);
-      boundary_G[f] = outer_product(face.n, g_n) + T;
-      boundary_u[f] = extrapolated + face.d_n * g_n;
-      if (cell_hessian)
-        boundary_u[f] += boundary_quadratic_term[f];
-    }
-    }
-  }
-  update_ghost_boundary_faces(geometry, boundary_u);
-}
-
-template <int dim>
-Tensor<1, dim> SolidSolver<dim>::face_force_density(const unsigned int f) const
-{
-  const auto& face = geometry.faces[f];
-  if (face.N != invalid_cell)
-  {
-    if (parameters.variant != Variant::jasak_weller)
-      return first_piola_traction(face_gradient(f), face.n, lame);
-    // Jasak-Weller: K n.grad u_f (Eq. 19 with interpolated gradients) + n.q of the
-    // interpolated cell gradient, as solidDisplacementFoam's laplacian + div(sigmaExp).
-    const Tensor<2, dim> G_f = face_gradient(f);
+    // Demirdzic-Muzaferija and Jasak-Weller: the interpolated cell gradient (the cell's own at a
+    // boundary), with its normal part replaced by g_n.
     const Tensor<2, dim> G_bar =
-        face.w * cell_gradient(face.P) + (1 - face.w) * cell_gradient(face.N);
-    return lame.K() * (face.n * G_f) + first_piola_traction(G_bar, face.n, lame) -
-           lame.K() * (face.n * G_bar);
+      boundary ? G_P : face.w * G_P + (1 - face.w) * cell_gradient(face.N);
+    return G_bar + outer_product(face.n, g_n - face.n * G_bar);
   }
-  const auto type = conditions.type(f);
-  if (takes_traction(type))
-    return boundary_traction(f, boundary_G[f]);
-  const Tensor<1, dim> t = first_piola_traction(face_gradient(f), face.n, lame);
-  return type == Type::symmetry ? (t * face.n) * face.n : t;
-}
 
-template <int dim>
-void SolidSolver<dim>::compute_residual(std::array<CellVector, dim>& residual) const
-{
-  // R_P = sum_f S_f n.(Sigma.F^T)_f + rho V (b - a(u)), the residual of Eq. 16.
-  for (auto& r : residual)
-    r = 0;
-  for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+  template <int dim>
+  Tensor<1, dim> SolidSolver<dim>::boundary_traction(const unsigned int f,
+                                                     const Tensor<2, dim>& G) const
+  {
+    // The force per reference area of a Cauchy traction t: t S'/S (Eq. 24), S'/S from Nanson.
+    const auto& face = geometry.faces[f];
+    const Type type = conditions.type(f);
+    const Tensor<1, dim> area_ratio_n = deformed_area_vector(G, face.n, lame);
+    if (type == Type::external_traction)
+      return area_ratio_n.norm() * external_traction[f];
+    if (type == Type::pressure)
+      return -given_traction[f][0] * area_ratio_n;
+    return area_ratio_n.norm() * given_traction[f];
+  }
+
+  template <int dim>
+  void SolidSolver<dim>::evaluate_given_tractions()
+  {
+    given_traction.resize(geometry.faces.size());
+    for (const unsigned int f : geometry.boundary_faces())
+    {
+      const Type type = conditions.type(f);
+      if (type == Type::pressure)
+        given_traction[f][0] = conditions.function(f).value(geometry.faces[f].centre);
+      else if (type == Type::traction)
+        for (unsigned int d = 0; d < dim; ++d)
+          given_traction[f][d] = conditions.function(f).value(geometry.faces[f].centre, d);
+    }
+  }
+
+  template <int dim>
+  void SolidSolver<dim>::update_boundary_values()
+  {
+    for (const unsigned int f : geometry.boundary_faces())
+    {
+      const auto& face = geometry.faces[f];
+      const Type type = conditions.type(f);
+      const Tensor<2, dim> G_P = cell_gradient(face.P);
+      const Tensor<1, dim> extrapolated = u[face.P] + face.k_P * G_P;
+      switch (type)
+      {
+        case Type::fixed_displacement:
+        {
+          const auto& fn = conditions.function(f);
+          for (unsigned int d = 0; d < dim; ++d)
+            boundary_u[f][d] = fn.value(face.centre, d);
+          break;
+        }
+        case Type::symmetry:
+        {
+          Tensor<1, dim> e = extrapolated;
+          if (cell_hessian)
+            e += boundary_quadratic_term[f];
+          boundary_u[f] = e - (e * face.n) * face.n;
+          break;
+        }
+        default:
+        {
+          // Eq. 24: K g_n = t S'/S - n . q, with n . q = n.(Sigma.F^T) - K n . grad u at the
+          // previous iterate; then u_b from Eq. 23.
+          const Tensor<2, dim>& G_old = boundary_G[f];
+          const Tensor<1, dim> n_q =
+            first_piola_traction(G_old, face.n, lame) - lame.K() * (face.n * G_old);
+          const Tensor<1, dim> g_n = (boundary_traction(f, G_old) - n_q) / lame.K();
+          Tensor<2, dim> T; // tangential part
+          if (parameters.variant == Variant::present)
+            for (unsigned int j = 0; j < dim; ++j)
+            {
+              const Tensor<1, dim> t = tangential_gradient(face, vertex_u[j]);
+              for (unsigned int i = 0; i < dim; ++i)
+                T[i][j] = t[i];
+            }
+          else
+            T = G_P - outer_product(face.n, face.n * G_P);
+          boundary_G[f] = outer_product(face.n, g_n) + T;
+          boundary_u[f] = extrapolated + face.d_n * g_n;
+          if (cell_hessian)
+            boundary_u[f] += boundary_quadratic_term[f];
+        }
+      }
+    }
+    update_ghost_boundary_faces(geometry, boundary_u);
+  }
+
+  template <int dim>
+  Tensor<1, dim> SolidSolver<dim>::face_force_density(const unsigned int f) const
   {
     const auto& face = geometry.faces[f];
-    if (face.kind == FaceKind::ghost_boundary)
-      continue;
-    const Tensor<1, dim> force = face.area * face_force_density(f);
-    for (unsigned int j = 0; j < dim; ++j)
+    if (face.N != invalid_cell)
     {
-      residual[j].local_element(face.P) += force[j];
-      if (face.kind == FaceKind::interior)
-        residual[j].local_element(face.N) -= force[j];
+      if (parameters.variant != Variant::jasak_weller)
+        return first_piola_traction(face_gradient(f), face.n, lame);
+      // Jasak-Weller: K n.grad u_f (Eq. 19 with interpolated gradients) + n.q of the
+      // interpolated cell gradient, as solidDisplacementFoam's laplacian + div(sigmaExp).
+      const Tensor<2, dim> G_f = face_gradient(f);
+      const Tensor<2, dim> G_bar =
+        face.w * cell_gradient(face.P) + (1 - face.w) * cell_gradient(face.N);
+      return lame.K() * (face.n * G_f) + first_piola_traction(G_bar, face.n, lame) -
+             lame.K() * (face.n * G_bar);
     }
+    const auto type = conditions.type(f);
+    if (takes_traction(type))
+      return boundary_traction(f, boundary_G[f]);
+    const Tensor<1, dim> t = first_piola_traction(face_gradient(f), face.n, lame);
+    return type == Type::symmetry ? (t * face.n) * face.n : t;
   }
-  // The inertia rho V a with a = c0 v - c1 v^o + c2 v^oo and v = c0 u - c1 u^o + c2 u^oo
-  // (Eqs 17-18; backward Euler on the first step).
-  const auto [c0, c1, c2] = clock.bdf();
-  for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
-  {
-    const double rho_V = parameters.rho * geometry.cell_volume[c];
-    for (unsigned int j = 0; j < dim; ++j)
-    {
-      double acceleration = 0;
-      if (parameters.transient)
-      {
-        const double v = c0 * u.components[j].local_element(c) -
-                         c1 * u_old.components[j].local_element(c) +
-                         c2 * u_old2.components[j].local_element(c);
-        acceleration = c0 * v - c1 * v_old.components[j].local_element(c) +
-                       c2 * v_old2.components[j].local_element(c);
-      }
-      residual[j].local_element(c) += rho_V * (body_force_value[j][c] - acceleration);
-    }
-  }
-}
 
-template <int dim>
-Tensor<1, dim> SolidSolver<dim>::patch_force(const unsigned int patch) const
-{
-  Tensor<1, dim> force;
-  for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    if (geometry.faces[f].kind == FaceKind::boundary && geometry.faces[f].patch == patch)
-      force += geometry.faces[f].area * face_force_density(f);
-  return Utilities::MPI::sum(force, geometry.comm());
-}
+  template <int dim>
+  void SolidSolver<dim>::compute_residual(std::array<CellVector, dim>& residual) const
+  {
+    // R_P = sum_f S_f n.(Sigma.F^T)_f + rho V (b - a(u)), the residual of Eq. 16.
+    for (auto& r : residual)
+      r = 0;
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      const auto& face = geometry.faces[f];
+      if (face.kind == FaceKind::ghost_boundary)
+        continue;
+      const Tensor<1, dim> force = face.area * face_force_density(f);
+      for (unsigned int j = 0; j < dim; ++j)
+      {
+        residual[j].local_element(face.P) += force[j];
+        if (face.kind == FaceKind::interior)
+          residual[j].local_element(face.N) -= force[j];
+      }
+    }
+    // The inertia rho V a with a = c0 v - c1 v^o + c2 v^oo and v = c0 u - c1 u^o + c2 u^oo
+    // (Eqs 17-18; backward Euler on the first step).
+    const auto [c0, c1, c2] = clock.bdf();
+    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+    {
+      const double rho_V = parameters.rho * geometry.cell_volume[c];
+      for (unsigned int j = 0; j < dim; ++j)
+      {
+        double acceleration = 0;
+        if (parameters.transient)
+        {
+          const double v = c0 * u.components[j].local_element(c) -
+                           c1 * u_old.components[j].local_element(c) +
+                           c2 * u_old2.components[j].local_element(c);
+          acceleration = c0 * v - c1 * v_old.components[j].local_element(c) +
+                         c2 * v_old2.components[j].local_element(c);
+        }
+        residual[j].local_element(c) += rho_V * (body_force_value[j][c] - acceleration);
+      }
+    }
+  }
+
+  template <int dim>
+  Tensor<1, dim> SolidSolver<dim>::patch_force(const unsigned int patch) const
+  {
+    Tensor<1, dim> force;
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+      if (geometry.faces[f].kind == FaceKind::boundary && geometry.faces[f].patch == patch)
+        force += geometry.faces[f].area * face_force_density(f);
+    return Utilities::MPI::sum(force, geometry.comm());
+  }
 
 } // namespace fvfsi

@@ -26,7 +26,8 @@ namespace fvfsi
                   "2D only: plane strain or plane stress.");
     prm.add_parameter("Young's modulus", E, "E [Pa].", Patterns::Double(0));
     prm.add_parameter("Poisson's ratio", nu, "nu [-].", Patterns::Double(-0.999, 0.4999));
-    prm.add_parameter("Density", rho, "rho_0 [kg/m^3] (reference configuration).", Patterns::Double(0));
+    prm.add_parameter("Density", rho, "rho_0 [kg/m^3] (reference configuration).",
+                      Patterns::Double(0));
     prm.add_parameter("Body force", body_force,
                       "b [m/s^2] per unit mass, dim expressions of x, y[, z], t separated by `;`.");
     add_selection(prm, "Variant", variant, variant_names,
@@ -35,9 +36,10 @@ namespace fvfsi
                   "cell gradients interpolated to faces), Jasak-Weller (cell-centred Gauss "
                   "gradients with skew-corrected linear face values, the model of OpenFOAM's "
                   "solidDisplacementFoam).");
-    prm.add_parameter("Transient", transient,
-                      "true: inertia with the BDF2 (backward) scheme, Eqs 17-18, first step backward "
-                      "Euler, time step and end time from `Time`; false: steady (one solve).");
+    prm.add_parameter(
+      "Transient", transient,
+      "true: inertia with the BDF2 (backward) scheme, Eqs 17-18, first step backward "
+      "Euler, time step and end time from `Time`; false: steady (one solve).");
     prm.add_parameter("Outer tolerance", outer_tolerance,
                       "Stop the outer (segregated) iterations of a time step when "
                       "max |du| / max |u| is below this.",
@@ -50,38 +52,43 @@ namespace fvfsi
                       "IQN-ILS): number of kept iterate differences; 0 = plain segregated "
                       "iterations as in the paper.",
                       Patterns::Integer(0, 50));
-    prm.add_parameter("Boundary sweeps", boundary_sweeps,
-                      "Passes of the boundary-value (Eqs 23-24), vertex-value and gradient update per "
-                      "outer iteration: they depend on each other, and converging them makes the "
-                      "outer iteration a fixed-point map of u alone (needed by the acceleration).",
-                      Patterns::Integer(1, 100));
-    prm.add_parameter("Hessian correction", hessian_correction,
-                      "present variant only (an extension of the paper): add the second-order Taylor "
-                      "terms, with per-cell Hessians from a least-squares quadratic fit, to the vertex "
-                      "values (App. B) and to the boundary values extrapolated at traction (Eqs 23-24) "
-                      "and symmetry faces. The paper's first-order forms leave an O(h^2) vertex error "
-                      "whose structure changes at a traction boundary; where two traction boundaries "
-                      "meet, the max displacement error then converges like h^2 log(1/h). With the "
-                      "correction it is O(h^2) (prm/plate_hole.prm sets it). Costs one sparse product "
-                      "per cell and outer iteration, and about 15 % more outer iterations (plate with "
-                      "a hole, nu = 0.3); the other variants ignore it. Not for nearly incompressible "
-                      "plane strain: it slows the outer iterations there (plate with a hole, 968 "
-                      "cells: nu = 0.45 131 -> 274, nu = 0.49 274 -> 4866 iterations; nu = 0.499 not "
-                      "converged after 5000).");
+    prm.add_parameter(
+      "Boundary sweeps", boundary_sweeps,
+      "Passes of the boundary-value (Eqs 23-24), vertex-value and gradient update per "
+      "outer iteration: they depend on each other, and converging them makes the "
+      "outer iteration a fixed-point map of u alone (needed by the acceleration).",
+      Patterns::Integer(1, 100));
+    prm.add_parameter(
+      "Hessian correction", hessian_correction,
+      "present variant only (an extension of the paper): add the second-order Taylor "
+      "terms, with per-cell Hessians from a least-squares quadratic fit, to the vertex "
+      "values (App. B) and to the boundary values extrapolated at traction (Eqs 23-24) "
+      "and symmetry faces. The paper's first-order forms leave an O(h^2) vertex error "
+      "whose structure changes at a traction boundary; where two traction boundaries "
+      "meet, the max displacement error then converges like h^2 log(1/h). With the "
+      "correction it is O(h^2) (prm/plate_hole.prm sets it). Costs one sparse product "
+      "per cell and outer iteration, and about 15 % more outer iterations (plate with "
+      "a hole, nu = 0.3); the other variants ignore it. Not for nearly incompressible "
+      "plane strain: it slows the outer iterations there (plate with a hole, 968 "
+      "cells: nu = 0.45 131 -> 274, nu = 0.49 274 -> 4866 iterations; nu = 0.499 not "
+      "converged after 5000).");
     const std::string syntax =
       " Syntax: `patch: expression | patch: expression`, vector components separated by `;`.";
     prm.add_parameter("Fixed displacement", fixed_displacement,
                       "Patches with a given displacement u(x, t) [m]." + syntax);
     prm.add_parameter("Traction", traction,
                       "Patches with a given Cauchy traction t(x, t) [Pa] (Eq. 24; in finite strain "
-                      "scaled by the deformed area ratio S'/S)." + syntax);
+                      "scaled by the deformed area ratio S'/S)." +
+                        syntax);
     prm.add_parameter("Pressure", pressure,
                       "Patches with a given pressure p(x, t) [Pa]: traction -p n' on the deformed "
-                      "face." + syntax);
+                      "face." +
+                        syntax);
     prm.add_parameter("Symmetry", symmetry, "Symmetry-plane patches, comma separated.");
-    prm.add_parameter("External traction", external_traction,
-                      "Patches whose Cauchy traction is set per face by another solver (FSI), comma "
-                      "separated.");
+    prm.add_parameter(
+      "External traction", external_traction,
+      "Patches whose Cauchy traction is set per face by another solver (FSI), comma "
+      "separated.");
     prm.leave_subsection();
     solver.reduction = 0.1;
     solver.declare(prm, "Solid linear solver");

@@ -12,338 +12,342 @@
 
 namespace fvfsi
 {
-using namespace dealii;
-using Type = SolidBoundaryCondition::Type;
+  using namespace dealii;
+  using Type = SolidBoundaryCondition::Type;
 
-template <int dim>
-SolidSolver<dim>::SolidSolver(const FVGeometry<dim>& geometry,
-                              const MeshParameters& mesh_parameters,
-                              const SolidParameters& parameters, const TimeControl& clock)
-    : geometry(geometry), parameters(parameters), clock(clock),
-      pcout(std::cout, Utilities::MPI::this_mpi_process(geometry.comm()) == 0),
-      vertex_interpolation(geometry), least_squares(geometry), gauss_green(geometry),
-      laplacian(geometry), body_force(dim), acceleration(/*filter=*/1e-5)
-{
-  const double E = parameters.E, nu = parameters.nu;
-  lame.mu = E / (2 * (1 + nu));
-  lame.lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
-  if (dim == 2 && parameters.plane == SolidParameters::Plane::stress)
-    lame.lambda = 2 * lame.mu * lame.lambda / (lame.lambda + 2 * lame.mu);
-  lame.nonlinear = parameters.model == SolidParameters::Model::st_venant_kirchhoff;
-  initialize_function(body_force, parameters.body_force, "Solid/Body force");
-  for (auto& b : body_force_value)
-    b.assign(geometry.n_owned_cells(), 0.0);
-  setup_boundary_conditions(mesh_parameters);
-  find_constrained_vertices();
-  evaluate_given_tractions();
-  if (parameters.variant == Variant::present && parameters.hessian_correction)
-    setup_hessian_correction();
-
-  for (auto* field : {&u, &u_old, &u_old2, &v_old, &v_old2})
-    *field = CellVectorField<dim>(geometry);
-  for (auto& g : grad_u)
-    g = CellGradient<dim>(geometry);
-  for (auto& v : vertex_u)
-    v.assign(geometry.vertices().size(), 0.0);
-  boundary_u.assign(geometry.faces.size(), Tensor<1, dim>());
-  boundary_G.assign(geometry.faces.size(), Tensor<2, dim>());
-  external_traction.assign(geometry.faces.size(), Tensor<1, dim>());
-  for (auto* x : {&f, &g, &f_previous, &g_previous})
+  template <int dim>
+  SolidSolver<dim>::SolidSolver(const FVGeometry<dim>& geometry,
+                                const MeshParameters& mesh_parameters,
+                                const SolidParameters& parameters, const TimeControl& clock)
+      : geometry(geometry), parameters(parameters), clock(clock),
+        pcout(std::cout, Utilities::MPI::this_mpi_process(geometry.comm()) == 0),
+        vertex_interpolation(geometry), least_squares(geometry), gauss_green(geometry),
+        laplacian(geometry), body_force(dim), acceleration(/*filter=*/1e-5)
   {
-    x->reinit(dim);
-    for (unsigned int j = 0; j < dim; ++j)
-      x->block(j).reinit(geometry.partitioner());
-    x->collect_sizes();
-  }
-  for (unsigned int j = 0; j < dim; ++j)
-  {
-    laplacian.reinit_matrix(matrix[j]);
-    linear_solver[j] = std::make_unique<LinearSolver>(parameters.solver);
-  }
-}
+    const double E = parameters.E, nu = parameters.nu;
+    lame.mu = E / (2 * (1 + nu));
+    lame.lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+    if (dim == 2 && parameters.plane == SolidParameters::Plane::stress)
+      lame.lambda = 2 * lame.mu * lame.lambda / (lame.lambda + 2 * lame.mu);
+    lame.nonlinear = parameters.model == SolidParameters::Model::st_venant_kirchhoff;
+    initialize_function(body_force, parameters.body_force, "Solid/Body force");
+    for (auto& b : body_force_value)
+      b.assign(geometry.n_owned_cells(), 0.0);
+    setup_boundary_conditions(mesh_parameters);
+    find_constrained_vertices();
+    evaluate_given_tractions();
+    if (parameters.variant == Variant::present && parameters.hessian_correction)
+      setup_hessian_correction();
 
-template <int dim>
-void SolidSolver<dim>::setup_hessian_correction()
-{
-  // The data of the fit (see solid_gradients.templates.h): mirror images across symmetry planes, the given
-  // displacements, and the normal derivative of Eq. 24 at traction faces.
-  QuadraticFitData data;
-  data.weight_exponent = 2;
-  data.value_faces_touch_P = false;
-  data.undetermined_is_error = false;
-  data.rank_tolerance = 1e-10;
-  data.mirror_faces.assign(geometry.faces.size(), false);
-  data.value_faces = data.normal_derivative_faces = data.mirror_faces;
-  for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    if (geometry.faces[f].N == invalid_cell)
+    for (auto* field : {&u, &u_old, &u_old2, &v_old, &v_old2})
+      *field = CellVectorField<dim>(geometry);
+    for (auto& g : grad_u)
+      g = CellGradient<dim>(geometry);
+    for (auto& v : vertex_u)
+      v.assign(geometry.vertices().size(), 0.0);
+    boundary_u.assign(geometry.faces.size(), Tensor<1, dim>());
+    boundary_G.assign(geometry.faces.size(), Tensor<2, dim>());
+    external_traction.assign(geometry.faces.size(), Tensor<1, dim>());
+    for (auto* x : {&f, &g, &f_previous, &g_previous})
     {
-      data.mirror_faces[f] = conditions.type(f) == Type::symmetry;
-      data.value_faces[f] = conditions.type(f) == Type::fixed_displacement;
-      data.normal_derivative_faces[f] = takes_traction(conditions.type(f));
+      x->reinit(dim);
+      for (unsigned int j = 0; j < dim; ++j)
+        x->block(j).reinit(geometry.partitioner());
+      x->collect_sizes();
     }
-  cell_hessian = std::make_unique<QuadraticFit<dim>>(geometry, data);
-  const unsigned int n_undetermined =
-      Utilities::MPI::sum(cell_hessian->n_undetermined(), geometry.comm());
-  if (n_undetermined > 0)
-    pcout << "fvfsi: Solid/Hessian correction: in " << n_undetermined
-          << " cells the neighbourhood does not determine a quadratic; they keep the paper's "
-             "first-order terms (H = 0)\n";
-  for (auto& H : hessian)
-    H = CellHessian<dim>(geometry);
-  boundary_g_n.assign(geometry.faces.size(), Tensor<1, dim>());
-  boundary_quadratic_term.assign(geometry.faces.size(), Tensor<1, dim>());
-  for (auto& term : vertex_quadratic_term)
-    term.assign(geometry.vertices().size(), 0.0);
-}
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      laplacian.reinit_matrix(matrix[j]);
+      linear_solver[j] = std::make_unique<LinearSolver>(parameters.solver);
+    }
+  }
 
-template <int dim>
-void SolidSolver<dim>::setup_boundary_conditions(const MeshParameters& mesh_parameters)
-{
-  conditions = FaceConditions<dim, Type>(
+  template <int dim>
+  void SolidSolver<dim>::setup_hessian_correction()
+  {
+    // The data of the fit (see solid_gradients.templates.h): mirror images across symmetry planes, the given
+    // displacements, and the normal derivative of Eq. 24 at traction faces.
+    QuadraticFitData data;
+    data.weight_exponent = 2;
+    data.value_faces_touch_P = false;
+    data.undetermined_is_error = false;
+    data.rank_tolerance = 1e-10;
+    data.mirror_faces.assign(geometry.faces.size(), false);
+    data.value_faces = data.normal_derivative_faces = data.mirror_faces;
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+      if (geometry.faces[f].N == invalid_cell)
+      {
+        data.mirror_faces[f] = conditions.type(f) == Type::symmetry;
+        data.value_faces[f] = conditions.type(f) == Type::fixed_displacement;
+        data.normal_derivative_faces[f] = takes_traction(conditions.type(f));
+      }
+    cell_hessian = std::make_unique<QuadraticFit<dim>>(geometry, data);
+    const unsigned int n_undetermined =
+      Utilities::MPI::sum(cell_hessian->n_undetermined(), geometry.comm());
+    if (n_undetermined > 0)
+      pcout << "fvfsi: Solid/Hessian correction: in " << n_undetermined
+            << " cells the neighbourhood does not determine a quadratic; they keep the paper's "
+               "first-order terms (H = 0)\n";
+    for (auto& H : hessian)
+      H = CellHessian<dim>(geometry);
+    boundary_g_n.assign(geometry.faces.size(), Tensor<1, dim>());
+    boundary_quadratic_term.assign(geometry.faces.size(), Tensor<1, dim>());
+    for (auto& term : vertex_quadratic_term)
+      term.assign(geometry.vertices().size(), 0.0);
+  }
+
+  template <int dim>
+  void SolidSolver<dim>::setup_boundary_conditions(const MeshParameters& mesh_parameters)
+  {
+    conditions = FaceConditions<dim, Type>(
       geometry, mesh_parameters, parameters.boundary_conditions(),
       [](const Type t) { return t == Type::pressure ? 1u : static_cast<unsigned int>(dim); },
       "Solid", "use a traction of 0 for a free surface");
-}
+  }
 
-template <int dim>
-void SolidSolver<dim>::assemble_matrices(const double mass_coefficient)
-{
-  // A_j: the orthogonal part of Eq. 19 with K = 2 mu + lambda (Eqs 26-27), Dirichlet faces
-  // (fixed displacement; symmetry for the normal component, weight n_j^2) and the mass term.
-  ScalarBoundaryConditions<dim> bc;
-  for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    if (geometry.faces[f].N == invalid_cell)
-      bc.patch_type[geometry.faces[f].patch] =
-          takes_traction(conditions.type(f)) ? BoundaryType::neumann : BoundaryType::dirichlet;
-  bc.value.assign(geometry.faces.size(), 0.0);
-  CellVector unused_rhs = geometry.make_cell_vector();
-  for (unsigned int j = 0; j < dim; ++j)
+  template <int dim>
+  void SolidSolver<dim>::assemble_matrices(const double mass_coefficient)
   {
-    FaceVector gamma(geometry.faces.size(), lame.K());
+    // A_j: the orthogonal part of Eq. 19 with K = 2 mu + lambda (Eqs 26-27), Dirichlet faces
+    // (fixed displacement; symmetry for the normal component, weight n_j^2) and the mass term.
+    ScalarBoundaryConditions<dim> bc;
     for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-      if (geometry.faces[f].N == invalid_cell && conditions.type(f) == Type::symmetry)
-        gamma[f] *= geometry.faces[f].n[j] * geometry.faces[f].n[j];
-    matrix[j] = 0;
-    laplacian.assemble(gamma, bc, matrix[j], unused_rhs);
-    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
-      matrix[j].add(geometry.global_index(c), geometry.global_index(c),
-                    parameters.rho * geometry.cell_volume[c] * mass_coefficient);
-    matrix[j].compress(VectorOperation::add);
-    linear_solver[j]->initialize(matrix[j]);
-  }
-  assembled_mass_coefficient = mass_coefficient;
-}
-
-template <int dim>
-void SolidSolver<dim>::shift_time_levels()
-{
-  // v^[m-1] from the step just finished (BDF2 or, after the first step, backward Euler):
-  // v = c0 u - c1 u^o + c2 u^oo.
-  const auto [c0, c1, c2] = clock.bdf();
-  for (unsigned int j = 0; j < dim; ++j)
-    for (unsigned int c = 0; c < geometry.n_relevant_cells(); ++c)
-    {
-      const double u_c = u.components[j].local_element(c),
-                   u1 = u_old.components[j].local_element(c),
-                   u2 = u_old2.components[j].local_element(c);
-      v_old2.components[j].local_element(c) = v_old.components[j].local_element(c);
-      v_old.components[j].local_element(c) = c0 * u_c - c1 * u1 + c2 * u2;
-      u_old2.components[j].local_element(c) = u1;
-      u_old.components[j].local_element(c) = u_c;
-    }
-}
-
-template <int dim>
-void SolidSolver<dim>::begin_time_step()
-{
-  const double t = clock.time();
-  body_force.set_time(t);
-  for (unsigned int j = 0; j < dim; ++j) // b at the cell centres, once per time step
-    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
-      body_force_value[j][c] = body_force.value(geometry.centroid[c], j);
-  conditions.set_time(t);
-  evaluate_given_tractions();
-  // The inertia term rho V a, a = c0 v - c1 v^o + c2 v^oo with v = c0 u - c1 u^o + c2 u^oo
-  // (Eqs 17-18): its implicit part is rho V c0^2 u.
-  const double c0 = parameters.transient ? clock.bdf().c0 : 0;
-  if (c0 * c0 != assembled_mass_coefficient)
-    assemble_matrices(c0 * c0);
-  if (cell_hessian)
-    update_boundary_values(); // this time's fixed displacements, also on ghost_boundary faces
-}
-
-template <int dim>
-void SolidSolver<dim>::end_time_step()
-{
-  if (parameters.transient)
-    shift_time_levels();
-}
-
-template <int dim>
-void SolidSolver<dim>::solve_current_step()
-{
-  // Outer iterations: the fixed point u = u + A^-1 R(u), accelerated by Anderson mixing.
-  acceleration.clear();
-  double change = 0;
-  for (unsigned int k = 1; k <= parameters.max_outer_iterations; ++k)
-  {
-    change = outer_iteration(k);
-    if (k % 500 == 0)
-      pcout << "fvfsi: solid " << clock.step_name() << ", outer iteration " << k << ": relative change "
-            << change << " (tolerance " << parameters.outer_tolerance << ")\n";
-    if (!std::isfinite(change))
-      throw std::runtime_error("Solid: displacement is not finite at " + clock.step_name() +
-                               ", outer iteration " + std::to_string(k));
-    if (change < parameters.outer_tolerance)
-    {
-      update_gradients();
-      last_outer_iterations = k;
-      return;
-    }
-  }
-  throw std::runtime_error("Solid: outer iterations did not converge at " + clock.step_name() +
-                           ": relative change " + Utilities::to_string(change) + " after " +
-                           std::to_string(parameters.max_outer_iterations) +
-                           " iterations (raise Solid/Max outer iterations, or reduce the load or "
-                           "time step)");
-}
-
-template <int dim>
-double SolidSolver<dim>::outer_iteration(const unsigned int k)
-{
-  update_gradients();
-  std::array<CellVector, dim> residual, du;
-  for (unsigned int j = 0; j < dim; ++j)
-  {
-    residual[j] = geometry.make_cell_vector();
-    du[j] = geometry.make_cell_vector();
-  }
-  compute_residual(residual);
-  for (unsigned int j = 0; j < dim; ++j)
-    try
-    {
-      linear_solver[j]->solve(matrix[j], du[j], residual[j],
-                              "solid displacement component " + std::to_string(j));
-    }
-    catch (const std::exception& e)
-    {
-      throw std::runtime_error("Solid: at " + clock.step_name() + ", outer iteration " +
-                               std::to_string(k) + ": " + e.what());
-    }
-  // The fixed-point image g = u + du and its residual f = du; with acceleration u <- g + the
-  // least-squares correction of the model built from the last iterations' differences.
-  for (unsigned int j = 0; j < dim; ++j)
-  {
-    f.block(j) = du[j];
-    g.block(j) = u.components[j];
-    g.block(j) += du[j];
-  }
-  const double max_du = f.linfty_norm();
-  if (parameters.acceleration_depth > 0)
-  {
-    if (k > 1)
-    {
-      f_previous.sadd(-1, 1, f); // f - f_previous
-      g_previous.sadd(-1, 1, g);
-      acceleration.add_column(f_previous, g_previous);
-      if (acceleration.size() > parameters.acceleration_depth)
-        acceleration.drop_oldest();
-    }
-    f_previous = f;
-    g_previous = g;
-    BlockVector correction(f);
-    if (acceleration.correction(f, correction))
-      g += correction;
-  }
-  for (unsigned int j = 0; j < dim; ++j)
-  {
-    u.components[j] = g.block(j);
-    u.components[j].update_ghost_values();
-  }
-  const double max_u = g.linfty_norm();
-  if (!std::isfinite(max_u) || !std::isfinite(max_du))
-    return std::numeric_limits<double>::quiet_NaN();
-  return max_u == 0 ? 0 : max_du / max_u;
-}
-
-template <int dim>
-Tensor<2, dim> SolidSolver<dim>::cell_gradient(const unsigned int c) const
-{
-  Tensor<2, dim> G;
-  for (unsigned int j = 0; j < dim; ++j)
-  {
-    const Tensor<1, dim> g = grad_u[j][c];
-    for (unsigned int i = 0; i < dim; ++i)
-      G[i][j] = g[i];
-  }
-  return G;
-}
-
-template <int dim>
-Tensor<2, dim> SolidSolver<dim>::cell_stress(const unsigned int c) const
-{
-  return cauchy_stress(cell_gradient(c), lame);
-}
-
-template <int dim>
-Tensor<2, dim> SolidSolver<dim>::face_stress(const unsigned int f) const
-{
-  return cauchy_stress(face_gradient(f), lame);
-}
-
-template <int dim>
-std::vector<Tensor<1, dim>> SolidSolver<dim>::vertex_displacements() const
-{
-  std::vector<Tensor<1, dim>> d(geometry.vertices().size());
-  std::vector<double> values;
-  for (unsigned int j = 0; j < dim; ++j)
-  {
-    const std::vector<double>* v = &vertex_u[j];
-    if (parameters.variant != Variant::present)
-    {
-      // The other variants do not use vertex values: reconstruct them (App. B) for the caller.
-      FaceVector boundary_values(geometry.faces.size());
-      for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-        boundary_values[f] = boundary_u[f][j];
-      vertex_interpolation.interpolate(u.components[j], boundary_values, values);
-      v = &values;
-    }
-    for (unsigned int i = 0; i < d.size() && i < v->size(); ++i)
-      d[i][j] = (*v)[i];
-  }
-  return d;
-}
-
-template <int dim>
-void SolidSolver<dim>::set_external_traction(const std::vector<Tensor<1, dim>>& traction)
-{
-  external_traction = traction;
-}
-
-template <int dim>
-Tensor<1, dim> SolidSolver<dim>::probe_displacement(const PointProbes<dim>& probes,
-                                                    const unsigned int i) const
-{
-  return probes.template evaluate<Tensor<1, dim>>(
-      i, [this](const unsigned int c, const Tensor<1, dim>& dx) { return u[c] + dx * cell_gradient(c); });
-}
-
-template <int dim>
-void SolidSolver<dim>::add_output_fields(OutputFields<dim>& fields) const
-{
-  fields.add_vector("u", [this](const unsigned int c) { return u[c]; });
-  const char* axis[] = {"x", "y", "z"};
-  for (unsigned int i = 0; i < dim; ++i)
+      if (geometry.faces[f].N == invalid_cell)
+        bc.patch_type[geometry.faces[f].patch] =
+          takes_traction(conditions.type(f)) ? BoundaryType::neumann : BoundaryType::dirichlet;
+    bc.value.assign(geometry.faces.size(), 0.0);
+    CellVector unused_rhs = geometry.make_cell_vector();
     for (unsigned int j = 0; j < dim; ++j)
-      fields.add(std::string("sigma_") + axis[i] + axis[j],
-                 [&](const unsigned int c) { return cell_stress(c)[i][j]; });
-  fields.add("von_Mises", [this](const unsigned int c) {
-    const Tensor<2, dim> s = cell_stress(c);
-    const Tensor<2, dim> dev = s - trace(s) / 3.0 * unit_symmetric_tensor<dim>();
-    return std::sqrt(1.5 * scalar_product(dev, dev));
-  });
-}
+    {
+      FaceVector gamma(geometry.faces.size(), lame.K());
+      for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+        if (geometry.faces[f].N == invalid_cell && conditions.type(f) == Type::symmetry)
+          gamma[f] *= geometry.faces[f].n[j] * geometry.faces[f].n[j];
+      matrix[j] = 0;
+      laplacian.assemble(gamma, bc, matrix[j], unused_rhs);
+      for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+        matrix[j].add(geometry.global_index(c), geometry.global_index(c),
+                      parameters.rho * geometry.cell_volume[c] * mass_coefficient);
+      matrix[j].compress(VectorOperation::add);
+      linear_solver[j]->initialize(matrix[j]);
+    }
+    assembled_mass_coefficient = mass_coefficient;
+  }
 
-template class SolidSolver<2>;
-template class SolidSolver<3>;
+  template <int dim>
+  void SolidSolver<dim>::shift_time_levels()
+  {
+    // v^[m-1] from the step just finished (BDF2 or, after the first step, backward Euler):
+    // v = c0 u - c1 u^o + c2 u^oo.
+    const auto [c0, c1, c2] = clock.bdf();
+    for (unsigned int j = 0; j < dim; ++j)
+      for (unsigned int c = 0; c < geometry.n_relevant_cells(); ++c)
+      {
+        const double u_c = u.components[j].local_element(c),
+                     u1 = u_old.components[j].local_element(c),
+                     u2 = u_old2.components[j].local_element(c);
+        v_old2.components[j].local_element(c) = v_old.components[j].local_element(c);
+        v_old.components[j].local_element(c) = c0 * u_c - c1 * u1 + c2 * u2;
+        u_old2.components[j].local_element(c) = u1;
+        u_old.components[j].local_element(c) = u_c;
+      }
+  }
+
+  template <int dim>
+  void SolidSolver<dim>::begin_time_step()
+  {
+    const double t = clock.time();
+    body_force.set_time(t);
+    for (unsigned int j = 0; j < dim; ++j) // b at the cell centres, once per time step
+      for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+        body_force_value[j][c] = body_force.value(geometry.centroid[c], j);
+    conditions.set_time(t);
+    evaluate_given_tractions();
+    // The inertia term rho V a, a = c0 v - c1 v^o + c2 v^oo with v = c0 u - c1 u^o + c2 u^oo
+    // (Eqs 17-18): its implicit part is rho V c0^2 u.
+    const double c0 = parameters.transient ? clock.bdf().c0 : 0;
+    if (c0 * c0 != assembled_mass_coefficient)
+      assemble_matrices(c0 * c0);
+    if (cell_hessian)
+      update_boundary_values(); // this time's fixed displacements, also on ghost_boundary faces
+  }
+
+  template <int dim>
+  void SolidSolver<dim>::end_time_step()
+  {
+    if (parameters.transient)
+      shift_time_levels();
+  }
+
+  template <int dim>
+  void SolidSolver<dim>::solve_current_step()
+  {
+    // Outer iterations: the fixed point u = u + A^-1 R(u), accelerated by Anderson mixing.
+    acceleration.clear();
+    double change = 0;
+    for (unsigned int k = 1; k <= parameters.max_outer_iterations; ++k)
+    {
+      change = outer_iteration(k);
+      if (k % 500 == 0)
+        pcout << "fvfsi: solid " << clock.step_name() << ", outer iteration " << k
+              << ": relative change " << change << " (tolerance " << parameters.outer_tolerance
+              << ")\n";
+      if (!std::isfinite(change))
+        throw std::runtime_error("Solid: displacement is not finite at " + clock.step_name() +
+                                 ", outer iteration " + std::to_string(k));
+      if (change < parameters.outer_tolerance)
+      {
+        update_gradients();
+        last_outer_iterations = k;
+        return;
+      }
+    }
+    throw std::runtime_error("Solid: outer iterations did not converge at " + clock.step_name() +
+                             ": relative change " + Utilities::to_string(change) + " after " +
+                             std::to_string(parameters.max_outer_iterations) +
+                             " iterations (raise Solid/Max outer iterations, or reduce the load or "
+                             "time step)");
+  }
+
+  template <int dim>
+  double SolidSolver<dim>::outer_iteration(const unsigned int k)
+  {
+    update_gradients();
+    std::array<CellVector, dim> residual, du;
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      residual[j] = geometry.make_cell_vector();
+      du[j] = geometry.make_cell_vector();
+    }
+    compute_residual(residual);
+    for (unsigned int j = 0; j < dim; ++j)
+      try
+      {
+        linear_solver[j]->solve(matrix[j], du[j], residual[j],
+                                "solid displacement component " + std::to_string(j));
+      }
+      catch (const std::exception& e)
+      {
+        throw std::runtime_error("Solid: at " + clock.step_name() + ", outer iteration " +
+                                 std::to_string(k) + ": " + e.what());
+      }
+    // The fixed-point image g = u + du and its residual f = du; with acceleration u <- g + the
+    // least-squares correction of the model built from the last iterations' differences.
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      f.block(j) = du[j];
+      g.block(j) = u.components[j];
+      g.block(j) += du[j];
+    }
+    const double max_du = f.linfty_norm();
+    if (parameters.acceleration_depth > 0)
+    {
+      if (k > 1)
+      {
+        f_previous.sadd(-1, 1, f); // f - f_previous
+        g_previous.sadd(-1, 1, g);
+        acceleration.add_column(f_previous, g_previous);
+        if (acceleration.size() > parameters.acceleration_depth)
+          acceleration.drop_oldest();
+      }
+      f_previous = f;
+      g_previous = g;
+      BlockVector correction(f);
+      if (acceleration.correction(f, correction))
+        g += correction;
+    }
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      u.components[j] = g.block(j);
+      u.components[j].update_ghost_values();
+    }
+    const double max_u = g.linfty_norm();
+    if (!std::isfinite(max_u) || !std::isfinite(max_du))
+      return std::numeric_limits<double>::quiet_NaN();
+    return max_u == 0 ? 0 : max_du / max_u;
+  }
+
+  template <int dim>
+  Tensor<2, dim> SolidSolver<dim>::cell_gradient(const unsigned int c) const
+  {
+    Tensor<2, dim> G;
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      const Tensor<1, dim> g = grad_u[j][c];
+      for (unsigned int i = 0; i < dim; ++i)
+        G[i][j] = g[i];
+    }
+    return G;
+  }
+
+  template <int dim>
+  Tensor<2, dim> SolidSolver<dim>::cell_stress(const unsigned int c) const
+  {
+    return cauchy_stress(cell_gradient(c), lame);
+  }
+
+  template <int dim>
+  Tensor<2, dim> SolidSolver<dim>::face_stress(const unsigned int f) const
+  {
+    return cauchy_stress(face_gradient(f), lame);
+  }
+
+  template <int dim>
+  std::vector<Tensor<1, dim>> SolidSolver<dim>::vertex_displacements() const
+  {
+    std::vector<Tensor<1, dim>> d(geometry.vertices().size());
+    std::vector<double> values;
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      const std::vector<double>* v = &vertex_u[j];
+      if (parameters.variant != Variant::present)
+      {
+        // The other variants do not use vertex values: reconstruct them (App. B) for the caller.
+        FaceVector boundary_values(geometry.faces.size());
+        for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+          boundary_values[f] = boundary_u[f][j];
+        vertex_interpolation.interpolate(u.components[j], boundary_values, values);
+        v = &values;
+      }
+      for (unsigned int i = 0; i < d.size() && i < v->size(); ++i)
+        d[i][j] = (*v)[i];
+    }
+    return d;
+  }
+
+  template <int dim>
+  void SolidSolver<dim>::set_external_traction(const std::vector<Tensor<1, dim>>& traction)
+  {
+    external_traction = traction;
+  }
+
+  template <int dim>
+  Tensor<1, dim> SolidSolver<dim>::probe_displacement(const PointProbes<dim>& probes,
+                                                      const unsigned int i) const
+  {
+    return probes.template evaluate<Tensor<1, dim>>(
+      i, [this](const unsigned int c, const Tensor<1, dim>& dx)
+      { return u[c] + dx * cell_gradient(c); });
+  }
+
+  template <int dim>
+  void SolidSolver<dim>::add_output_fields(OutputFields<dim>& fields) const
+  {
+    fields.add_vector("u", [this](const unsigned int c) { return u[c]; });
+    const char* axis[] = {"x", "y", "z"};
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        fields.add(std::string("sigma_") + axis[i] + axis[j],
+                   [&](const unsigned int c) { return cell_stress(c)[i][j]; });
+    fields.add("von_Mises",
+               [this](const unsigned int c)
+               {
+                 const Tensor<2, dim> s = cell_stress(c);
+                 const Tensor<2, dim> dev = s - trace(s) / 3.0 * unit_symmetric_tensor<dim>();
+                 return std::sqrt(1.5 * scalar_product(dev, dev));
+               });
+  }
+
+  template class SolidSolver<2>;
+  template class SolidSolver<3>;
 } // namespace fvfsi

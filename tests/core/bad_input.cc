@@ -36,13 +36,18 @@ int main(int argc, char** argv)
       "set Output directory = bad_input_out\nsubsection Mesh\n  set Generator = file\n"
       "  set File name = no_such_mesh.msh\nend\n",
       {"missing_mesh.prm"});
-  run(out, "unknown generator", "set Output directory = bad_input_out\nsubsection Mesh\n  set Generator = hyper_cheese\nend\n",
-      {"bad_generator.prm"});
+  run(
+    out, "unknown generator",
+    "set Output directory = bad_input_out\nsubsection Mesh\n  set Generator = hyper_cheese\nend\n",
+    {"bad_generator.prm"});
   run(out, "bad --set key", "", {"--set", "Mesh/Refinements=3"});
   run(out, "bad --set value", "", {"--set", "Mesh/Global refinements=-1"});
-  run(out, "bad expression", "set Output directory = bad_input_out\nsubsection Poisson\n  set Source = sin(x\nend\n",
+  run(out, "bad expression",
+      "set Output directory = bad_input_out\nsubsection Poisson\n  set Source = sin(x\nend\n",
       {"bad_expression.prm"});
-  run(out, "unknown patch", "set Output directory = bad_input_out\nsubsection Poisson\n  set Neumann patches = outlet\nend\n",
+  run(out, "unknown patch",
+      "set Output directory = bad_input_out\nsubsection Poisson\n  set Neumann patches = "
+      "outlet\nend\n",
       {"bad_patch.prm"});
   run(out, "unknown option", "", {"--frobnicate"});
 }

@@ -45,8 +45,8 @@ namespace
   const double r = 0.25;
   const Point<2> centres[2] = {Point<2>(1.75, -0.25), Point<2>(6.25, -0.25)};
 
-  void make(parallel::distributed::Triangulation<2>& tria, const std::string& generator, const double h,
-            const unsigned int refinements = 0)
+  void make(parallel::distributed::Triangulation<2>& tria, const std::string& generator,
+            const double h, const unsigned int refinements = 0)
   {
     fvfsi::MeshParameters p;
     p.generator = generator;
@@ -62,8 +62,9 @@ namespace
     for (int k = 0; k < 2; ++k)
     {
       const Point<2>& c = centres[k];
-      const bool in_quadrant = face_centre[1] > c[1] - 1e-12 &&
-                               (k == 0 ? face_centre[0] > c[0] - 1e-12 : face_centre[0] < c[0] + 1e-12);
+      const bool in_quadrant =
+        face_centre[1] > c[1] - 1e-12 &&
+        (k == 0 ? face_centre[0] > c[0] - 1e-12 : face_centre[0] < c[0] + 1e-12);
       if (in_quadrant && face_centre.distance(c) < 1.1 * r)
         return k;
     }
@@ -82,8 +83,9 @@ namespace
     double interface_y_error = 0;
   };
 
-  Summary summarise(const parallel::distributed::Triangulation<2>& tria, const fvfsi::FVGeometry<2>& fv,
-                    const unsigned int interface_id, const bool fluid)
+  Summary summarise(const parallel::distributed::Triangulation<2>& tria,
+                    const fvfsi::FVGeometry<2>& fv, const unsigned int interface_id,
+                    const bool fluid)
   {
     Summary s;
     std::vector<double> x;
@@ -105,7 +107,8 @@ namespace
               for (const unsigned int v : {0u, 1u})
               {
                 x.push_back(face->vertex(v)[0]);
-                s.interface_y_error = std::max(s.interface_y_error, std::abs(face->vertex(v)[1] + 1));
+                s.interface_y_error =
+                  std::max(s.interface_y_error, std::abs(face->vertex(v)[1] + 1));
               }
             const int k = fluid && face->boundary_id() == 2 ? arc_of(face->center()) : -1;
             if (k >= 0)
@@ -115,9 +118,11 @@ namespace
               s.chords += length;
               ++s.arc_faces;
               s.left_arc_faces += k == 0 ? 1 : 0;
-              s.arc_manifold_ids = s.arc_manifold_ids && face->manifold_id() == types::manifold_id(k + 1);
+              s.arc_manifold_ids =
+                s.arc_manifold_ids && face->manifold_id() == types::manifold_id(k + 1);
               for (const unsigned int v : {0u, 1u})
-                s.radial_error = std::max(s.radial_error, std::abs(face->vertex(v).distance(centres[k]) - r));
+                s.radial_error =
+                  std::max(s.radial_error, std::abs(face->vertex(v).distance(centres[k]) - r));
             }
           }
     const MPI_Comm comm = MPI_COMM_WORLD;
@@ -146,7 +151,8 @@ namespace
     return s;
   }
 
-  void check_boundaries(std::ostream& out, const Summary& s, const std::map<unsigned int, double>& expected)
+  void check_boundaries(std::ostream& out, const Summary& s,
+                        const std::map<unsigned int, double>& expected)
   {
     bool same_ids = s.length.size() == expected.size();
     double error = 0;
@@ -167,7 +173,8 @@ namespace
   void print_quality(std::ostream& out, const parallel::distributed::Triangulation<2>& tria,
                      const fvfsi::FVGeometry<2>& fv, const double h)
   {
-    double min_ar = 1e300, max_ar = 0, min_angle = 180, max_angle = 0, min_edge = 1e300, max_edge = 0;
+    double min_ar = 1e300, max_ar = 0, min_angle = 180, max_angle = 0, min_edge = 1e300,
+           max_edge = 0;
     for (const auto& cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())
       {
@@ -189,7 +196,8 @@ namespace
           const Point<2> p = cell->vertex(cyclic[i]), prev = cell->vertex(cyclic[(i + 3) % 4]),
                          next = cell->vertex(cyclic[(i + 1) % 4]);
           const Tensor<1, 2> a = prev - p, b = next - p;
-          const double angle = std::acos(std::clamp(a * b / (a.norm() * b.norm()), -1.0, 1.0)) * 180 / numbers::PI;
+          const double angle =
+            std::acos(std::clamp(a * b / (a.norm() * b.norm()), -1.0, 1.0)) * 180 / numbers::PI;
           min_angle = std::min(min_angle, angle);
           max_angle = std::max(max_angle, angle);
         }
@@ -204,13 +212,14 @@ namespace
     out << format("  aspect ratio (longest / shortest edge): min %.3f, max %.3f",
                   Utilities::MPI::min(min_ar, comm), Utilities::MPI::max(max_ar, comm))
         << std::endl;
-    out << format("  interior angles: min %.2f, max %.2f degrees", Utilities::MPI::min(min_angle, comm),
-                  Utilities::MPI::max(max_angle, comm))
+    out << format("  interior angles: min %.2f, max %.2f degrees",
+                  Utilities::MPI::min(min_angle, comm), Utilities::MPI::max(max_angle, comm))
         << std::endl;
     out << format("  edge length / h: min %.3f, max %.3f", Utilities::MPI::min(min_edge, comm) / h,
                   Utilities::MPI::max(max_edge, comm) / h)
         << std::endl;
-    out << format("  max non-orthogonality: %.2f degrees", Utilities::MPI::max(max_non_orthogonality, comm))
+    out << format("  max non-orthogonality: %.2f degrees",
+                  Utilities::MPI::max(max_non_orthogonality, comm))
         << std::endl;
   }
 
@@ -222,19 +231,25 @@ namespace
     const fvfsi::FVGeometry<2> fv(tria);
     const Summary s = summarise(tria, fv, 3, true);
     const double h_cells = h / (1 << refinements);
-    out << "--- fvfsi_cavity_channel " << format("%g", h) << ", Global refinements = " << refinements
-        << ": " << tria.n_global_active_cells() << " cells" << std::endl;
+    out << "--- fvfsi_cavity_channel " << format("%g", h)
+        << ", Global refinements = " << refinements << ": " << tria.n_global_active_cells()
+        << " cells" << std::endl;
     const double exact = 14 + 4 + 2 * (r * r - numbers::PI * r * r / 4);
-    out << format("  area %.8f, exact %.8f, difference %.4e; polygonal-arc segments D = %.4e over %u arc faces",
+    out << format("  area %.8f, exact %.8f, difference %.4e; polygonal-arc segments D = %.4e over "
+                  "%u arc faces",
                   s.area, exact, s.area - exact, s.segments, s.arc_faces)
         << std::endl;
-    check(out, "  fluid area = exact area to D", std::abs(s.area - exact) - s.segments * (1 + 1e-9), 1e-12 * exact);
-    check(out, "  fluid area = exact area + D", std::abs(s.area - exact - s.segments) / exact, 1e-12);
+    check(out, "  fluid area = exact area to D", std::abs(s.area - exact) - s.segments * (1 + 1e-9),
+          1e-12 * exact);
+    check(out, "  fluid area = exact area + D", std::abs(s.area - exact - s.segments) / exact,
+          1e-12);
     check(out, "  all cell volumes positive", s.positive);
-    check(out, "  as many arc faces on the left arc as on the right", 2 * s.left_arc_faces == s.arc_faces);
+    check(out, "  as many arc faces on the left arc as on the right",
+          2 * s.left_arc_faces == s.arc_faces);
     check(out, "  arc faces carry manifold ids 1 (left), 2 (right)", s.arc_manifold_ids);
     check(out, "  arc vertices on the arcs", s.radial_error, 1e-12);
-    check(out, "  interface has 4/h faces", s.faces.count(3) && s.faces.at(3) == std::lround(4 / h_cells));
+    check(out, "  interface has 4/h faces",
+          s.faces.count(3) && s.faces.at(3) == std::lround(4 / h_cells));
     const double arc_length = numbers::PI / 4; // two quarter circles of radius 0.25
     check_boundaries(out, s,
                      {{0, 1.0}, {1, 1.0}, {2, 14 + 1.75 + 7.75 + 2 * 0.75 + s.chords}, {3, 4.0}});
@@ -252,8 +267,8 @@ namespace
     const fvfsi::FVGeometry<2> fv(tria);
     const Summary s = summarise(tria, fv, 2, false);
     const unsigned int n_x = std::lround(4 / h), n_y = std::max(2l, std::lround(0.4 / h));
-    out << "--- fvfsi_cavity_plate " << format("%g", h) << ": " << tria.n_global_active_cells() << " cells"
-        << std::endl;
+    out << "--- fvfsi_cavity_plate " << format("%g", h) << ": " << tria.n_global_active_cells()
+        << " cells" << std::endl;
     check(out, "  (4/h) x max(2, round(0.4/h)) cells", tria.n_global_active_cells() == n_x * n_y);
     out << format("  area %.8f", s.area) << std::endl;
     check(out, "  plate area = 1.6", std::abs(s.area - 1.6) / 1.6, 1e-12);
@@ -302,9 +317,10 @@ int main(int argc, char** argv)
       x_error = std::max({x_error, std::abs(fluid.interface_x[i] - plate.interface_x[i]),
                           std::abs(fluid.interface_x[i] - (2 + i * h))});
     check(out, "  interface vertices coincide, x = 2 + k h",
-          Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0 || (same_vertices && x_error < 1e-12));
-    check(out, "  interface vertices at y = -1", std::max(fluid.interface_y_error, plate.interface_y_error),
-          1e-12);
+          Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0 ||
+            (same_vertices && x_error < 1e-12));
+    check(out, "  interface vertices at y = -1",
+          std::max(fluid.interface_y_error, plate.interface_y_error), 1e-12);
     check_fluid(out, h, 1);
   }
   out << "--- bad arguments" << std::endl;

@@ -101,7 +101,7 @@ namespace fvfsi_core_test
   {
     TestMesh(std::ostream& out, const std::string& generator, const std::string& arguments,
              const unsigned int refinements)
-      : tria(MPI_COMM_WORLD)
+        : tria(MPI_COMM_WORLD)
     {
       out << "--- " << dim << "D " << generator << " (" << arguments << "), " << refinements
           << " refinements, distortion 0.25" << std::endl;
@@ -159,7 +159,6 @@ namespace fvfsi_core_test
     }
     double operator()(const Point<dim>& x) const { return a + b * x; }
   };
-
 
   /// Gather records of `width` doubles from all ranks to rank 0 (bit-exact: deal.II packs the raw
   /// bytes). Returns the concatenation on rank 0, nothing elsewhere.

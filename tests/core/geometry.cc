@@ -88,9 +88,9 @@ void check_geometry(std::ostream& out, const parallel::distributed::Triangulatio
     }
     closed_error = std::max(closed_error, sum_S.norm() / sum_area);
     if (planar)
-      second_moment_error = std::max(second_moment_error,
-                                     (sum_rS - fv.cell_volume[c] * unit_symmetric_tensor<dim>()).norm() /
-                                       fv.cell_volume[c]);
+      second_moment_error = std::max(
+        second_moment_error,
+        (sum_rS - fv.cell_volume[c] * unit_symmetric_tensor<dim>()).norm() / fv.cell_volume[c]);
   }
   check(out, "owned cells have positive volume", positive_volumes);
   check(out, "owned cells have 2 dim faces, each with P or N = the cell",
@@ -127,7 +127,8 @@ void check_geometry(std::ostream& out, const parallel::distributed::Triangulatio
   bool ghost_faces_ok = true;
   for (unsigned int c = n_owned; c < fv.n_relevant_cells(); ++c)
     for (const unsigned int f : fv.cell_faces(c))
-      ghost_faces_ok = ghost_faces_ok && fv.faces[f].P == c && fv.faces[f].kind == fvfsi::FaceKind::ghost_boundary;
+      ghost_faces_ok =
+        ghost_faces_ok && fv.faces[f].P == c && fv.faces[f].kind == fvfsi::FaceKind::ghost_boundary;
   check(out, "ghost cells list only their ghost_boundary faces", ghost_faces_ok);
 
   // Per face.
@@ -142,21 +143,21 @@ void check_geometry(std::ostream& out, const parallel::distributed::Triangulatio
     const bool P_owned = face.P < n_owned;
     switch (face.kind)
     {
-    case FaceKind::interior:
-      kinds_ok = kinds_ok && P_owned && face.N < n_owned && face.counted_here;
-      break;
-    case FaceKind::processor:
-      kinds_ok = kinds_ok && P_owned && face.N >= n_owned && face.N < fv.n_relevant_cells();
-      ++n_processor;
-      n_processor_counted += face.counted_here ? 1 : 0;
-      break;
-    case FaceKind::boundary:
-      kinds_ok = kinds_ok && P_owned && face.N == invalid_cell && face.counted_here;
-      ++n_boundary_kind;
-      break;
-    case FaceKind::ghost_boundary:
-      kinds_ok = kinds_ok && !P_owned && face.N == invalid_cell && !face.counted_here;
-      break;
+      case FaceKind::interior:
+        kinds_ok = kinds_ok && P_owned && face.N < n_owned && face.counted_here;
+        break;
+      case FaceKind::processor:
+        kinds_ok = kinds_ok && P_owned && face.N >= n_owned && face.N < fv.n_relevant_cells();
+        ++n_processor;
+        n_processor_counted += face.counted_here ? 1 : 0;
+        break;
+      case FaceKind::boundary:
+        kinds_ok = kinds_ok && P_owned && face.N == invalid_cell && face.counted_here;
+        ++n_boundary_kind;
+        break;
+      case FaceKind::ghost_boundary:
+        kinds_ok = kinds_ok && !P_owned && face.N == invalid_cell && !face.counted_here;
+        break;
     }
     n_counted += face.counted_here ? 1 : 0;
 
@@ -169,8 +170,8 @@ void check_geometry(std::ostream& out, const parallel::distributed::Triangulatio
     std::sort(b.begin(), b.end());
     vertices_ok = vertices_ok && a == b;
     if (face.N == invalid_cell)
-      patches_ok = patches_ok && cell->at_boundary(face.face_no) &&
-                   face.patch == dealii_face->boundary_id();
+      patches_ok =
+        patches_ok && cell->at_boundary(face.face_no) && face.patch == dealii_face->boundary_id();
     else
       neighbours_ok = neighbours_ok && !cell->at_boundary(face.face_no) &&
                       cell->neighbor(face.face_no)->id() == fv.cell(face.N)->id();
@@ -207,7 +208,8 @@ void check_geometry(std::ostream& out, const parallel::distributed::Triangulatio
   n_boundary_faces = Utilities::MPI::sum(n_boundary_faces, MPI_COMM_WORLD);
   const unsigned long long expected =
     (fv.n_global_cells() * GeometryInfo<dim>::faces_per_cell + n_boundary_faces) / 2;
-  const unsigned long long counted = Utilities::MPI::sum<unsigned long long>(n_counted, MPI_COMM_WORLD);
+  const unsigned long long counted =
+    Utilities::MPI::sum<unsigned long long>(n_counted, MPI_COMM_WORLD);
   out << "distinct faces: " << expected << ", boundary faces: " << n_boundary_faces << std::endl;
   check(out, "faces counted_here (summed over ranks) = distinct faces", counted == expected);
   check(out, "boundary-kind faces (summed over ranks) = boundary faces",
@@ -223,9 +225,11 @@ void check_geometry(std::ostream& out, const parallel::distributed::Triangulatio
 /// Exact values on an affine image of a refined cube (planar faces): cell volume and centroid,
 /// face centre and area.
 template <int dim>
-void check_affine_exact(std::ostream& out, const fvfsi::FVGeometry<dim>& fv, const double cell_volume)
+void check_affine_exact(std::ostream& out, const fvfsi::FVGeometry<dim>& fv,
+                        const double cell_volume)
 {
-  double volume_error = 0, centroid_error = 0, centre_error = 0, area_error = 0, orthogonality_error = 0;
+  double volume_error = 0, centroid_error = 0, centre_error = 0, area_error = 0,
+         orthogonality_error = 0;
   for (unsigned int c = 0; c < fv.n_relevant_cells(); ++c)
   {
     const auto cell = fv.cell(c);
@@ -257,11 +261,12 @@ void check_affine_exact(std::ostream& out, const fvfsi::FVGeometry<dim>& fv, con
 template <int dim>
 void test_distorted_box(std::ostream& out)
 {
-  out << "--- " << dim << "D subdivided_hyper_rectangle, distortion 0.25 of the refined mesh" << std::endl;
+  out << "--- " << dim << "D subdivided_hyper_rectangle, distortion 0.25 of the refined mesh"
+      << std::endl;
   parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
   // (-1, 0.5[, 0]) .. (2, 2[, 1.5]) in 2 x 1 [x 1] coarse cells.
-  const std::string arguments = dim == 2 ? "2, 1 : -1, 0.5 : 2, 2 : true"
-                                         : "2, 1, 1 : -1, 0.5, 0 : 2, 2, 1.5 : true";
+  const std::string arguments =
+    dim == 2 ? "2, 1 : -1, 0.5 : 2, 2 : true" : "2, 1, 1 : -1, 0.5, 0 : 2, 2, 1.5 : true";
   make_test_mesh(tria, "subdivided_hyper_rectangle", arguments, dim == 2 ? 4 : 3, 0.25);
   const fvfsi::FVGeometry<dim> fv(tria);
   const double measure = dim == 2 ? 3 * 1.5 : 3 * 1.5 * 1.5;
@@ -284,7 +289,8 @@ void test_distorted_box(std::ostream& out)
     for (unsigned int j = 0; j < dim; ++j)
       A[i][j] = A3[i][j];
   }
-  out << "--- the same mesh, FVGeometry::reinit() with the vertices moved by x -> A x + t" << std::endl;
+  out << "--- the same mesh, FVGeometry::reinit() with the vertices moved by x -> A x + t"
+      << std::endl;
   fvfsi::FVGeometry<dim> moved(tria);
   std::vector<Point<dim>> x = fv.vertices();
   for (auto& p : x)
@@ -293,15 +299,17 @@ void test_distorted_box(std::ostream& out)
   double volume_error = 0, centroid_error = 0;
   for (unsigned int c = 0; c < fv.n_relevant_cells(); ++c)
   {
-    volume_error = std::max(volume_error, std::abs(moved.cell_volume[c] - determinant(A) * fv.cell_volume[c]) /
-                                            moved.cell_volume[c]);
-    centroid_error = std::max(centroid_error, (moved.centroid[c] - (A * fv.centroid[c] + t)).norm() /
-                                                std::pow(fv.cell_volume[c], 1.0 / dim));
+    volume_error =
+      std::max(volume_error, std::abs(moved.cell_volume[c] - determinant(A) * fv.cell_volume[c]) /
+                               moved.cell_volume[c]);
+    centroid_error =
+      std::max(centroid_error, (moved.centroid[c] - (A * fv.centroid[c] + t)).norm() /
+                                 std::pow(fv.cell_volume[c], 1.0 / dim));
   }
   check(out, "reinit(A x + t): V_P -> det A V_P", volume_error, 1e-12);
   check(out, "reinit(A x + t): r_P -> A r_P + t", centroid_error, 1e-12);
-  check_geometry(out, tria, moved, determinant(A) * measure, determinant(A) * measure * (A * centre + t), 3.0,
-                 dim == 2);
+  check_geometry(out, tria, moved, determinant(A) * measure,
+                 determinant(A) * measure * (A * centre + t), 3.0, dim == 2);
 }
 
 template <int dim>

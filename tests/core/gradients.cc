@@ -46,7 +46,8 @@ constexpr double tolerance_interpolated = 1e-10; // from VertexInterpolation's v
 /// max over owned cells and max over ghost cells of |g_c - b| / |b|.
 template <int dim>
 std::pair<double, double> gradient_errors(const fvfsi::FVGeometry<dim>& fv,
-                                          const fvfsi::CellGradient<dim>& g, const Tensor<1, dim>& b)
+                                          const fvfsi::CellGradient<dim>& g,
+                                          const Tensor<1, dim>& b)
 {
   double owned = 0, ghost = 0;
   for (unsigned int c = 0; c < fv.n_relevant_cells(); ++c)
@@ -98,8 +99,8 @@ void test(std::ostream& out, const std::string& generator, const std::string& ar
   least_squares.compute(phi, boundary, lsq);
   check_gradient(out, "Gauss-Green gradient (interpolated vertex values)", fv, gauss_green, b,
                  tolerance_interpolated);
-  check_gradient(out, "Gauss-Green gradient (exact vertex values)", fv, gauss_green_exact_vertices, b,
-                 tolerance);
+  check_gradient(out, "Gauss-Green gradient (exact vertex values)", fv, gauss_green_exact_vertices,
+                 b, tolerance);
   check_gradient(out, "least-squares gradient", fv, lsq, b, tolerance);
 
   // Face tangential gradients.
@@ -117,8 +118,9 @@ void test(std::ostream& out, const std::string& generator, const std::string& ar
     tangential_error =
       std::isfinite(e) ? std::max(tangential_error, e) : std::numeric_limits<double>::infinity();
   }
-  check(out, "tangential gradient = (I - n n) b on interior, processor, boundary faces "
-             "(interpolated vertex values)",
+  check(out,
+        "tangential gradient = (I - n n) b on interior, processor, boundary faces "
+        "(interpolated vertex values)",
         tangential_error, tolerance_interpolated);
   check(out, "tangential gradient = (I - n n) b on all faces (exact vertex values)",
         tangential_error_exact, tolerance);
@@ -129,22 +131,25 @@ void test(std::ostream& out, const std::string& generator, const std::string& ar
   for (const auto& face : faces)
     if (face.N == fvfsi::invalid_cell)
       bc.patch_type[face.patch] = fvfsi::BoundaryType::dirichlet;
-  for (const auto& [name, gradient] :
-       {std::make_pair(std::string("Gauss-Green"), &gauss_green), std::make_pair(std::string("least-squares"), &lsq)})
+  for (const auto& [name, gradient] : {std::make_pair(std::string("Gauss-Green"), &gauss_green),
+                                       std::make_pair(std::string("least-squares"), &lsq)})
   {
     double interior_error = 0, boundary_error = 0;
     unsigned int n_processor = 0;
     for (unsigned int f = 0; f < faces.size(); ++f)
     {
-      const double e = std::abs(laplacian.normal_gradient(f, phi, *gradient, bc) - faces[f].n * b) / b.norm();
+      const double e =
+        std::abs(laplacian.normal_gradient(f, phi, *gradient, bc) - faces[f].n * b) / b.norm();
       double& error = faces[f].N == fvfsi::invalid_cell ? boundary_error : interior_error;
       error = std::isfinite(e) ? std::max(error, e) : std::numeric_limits<double>::infinity();
       n_processor += faces[f].kind == fvfsi::FaceKind::processor ? 1 : 0;
     }
-    check(out, "normal gradient = n.b on interior and processor faces (" + name + " cell gradients)",
+    check(out,
+          "normal gradient = n.b on interior and processor faces (" + name + " cell gradients)",
           interior_error, tolerance);
-    check(out, "normal gradient = n.b on Dirichlet boundary and ghost_boundary faces (" + name +
-                 " cell gradients)",
+    check(out,
+          "normal gradient = n.b on Dirichlet boundary and ghost_boundary faces (" + name +
+            " cell gradients)",
           boundary_error, tolerance);
     if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1 && name == "Gauss-Green")
       check(out, "parallel: there are processor faces on every rank", n_processor > 0);

@@ -27,7 +27,8 @@ template <int dim>
 void run(std::ofstream& out)
 {
   parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
-  make_test_mesh(tria, "subdivided_hyper_cube", dim == 2 ? "8: 0: 1: true" : "4: 0: 1: true", 1, 0.25);
+  make_test_mesh(tria, "subdivided_hyper_cube", dim == 2 ? "8: 0: 1: true" : "4: 0: 1: true", 1,
+                 0.25);
   fvfsi::FVGeometry<dim> reference(tria);
   fvfsi::MeshParameters mesh;
   mesh.patch_names = {{0, "left"}, {1, "right"}, {2, "bottom"}, {3, "top"}};
@@ -35,9 +36,10 @@ void run(std::ofstream& out)
     mesh.patch_names.insert({{4, "front"}, {5, "back"}});
 
   // Affine motion of the whole boundary.
-  const std::string d_affine = dim == 2 ? "0.1*x - 0.05*y + 0.02*t; 0.03*x + 0.08*y"
-                                        : "0.1*x - 0.05*y + 0.02*z + 0.02*t; 0.03*x + 0.08*y - 0.04*z; "
-                                          "0.05*x + 0.01*y - 0.06*z";
+  const std::string d_affine = dim == 2
+                                 ? "0.1*x - 0.05*y + 0.02*t; 0.03*x + 0.08*y"
+                                 : "0.1*x - 0.05*y + 0.02*z + 0.02*t; 0.03*x + 0.08*y - 0.04*z; "
+                                   "0.05*x + 0.01*y - 0.06*z";
   fvfsi::TimeControl clock(1.0, 1.0); // the motion at t = 1 s
   clock.advance();
   fvfsi::MeshMotionParameters p;
@@ -87,7 +89,8 @@ void run(std::ofstream& out)
       sum += s;
     }
   const auto all = [](const bool b) { return Utilities::MPI::min(b ? 1 : 0, MPI_COMM_WORLD) == 1; };
-  check(out, format("%dD: one patch moved rigidly, every vertex moves between 0 and b", dim), all(bounded));
+  check(out, format("%dD: one patch moved rigidly, every vertex moves between 0 and b", dim),
+        all(bounded));
   check(out, format("%dD: the moving patch's vertices move by exactly b", dim), all(patch_exact));
 
   // The same motion with the patch displacement given from outside (as the FSI coupling does):
@@ -104,7 +107,8 @@ void run(std::ofstream& out)
   for (unsigned int c = 0; c < reference.n_owned_cells(); ++c)
     for (const unsigned int v : reference.cell_vertices(c))
       difference = std::max(difference, (z[v] - y[v]).norm());
-  check(out, format("%dD: patch displacement set from outside moves the mesh as the expression", dim),
+  check(out,
+        format("%dD: patch displacement set from outside moves the mesh as the expression", dim),
         Utilities::MPI::max(difference, MPI_COMM_WORLD), 1e-14);
   out << format("%dD: sum over owned cells' vertices of d.b/|b|^2: %.4f", dim,
                 Utilities::MPI::sum(sum, MPI_COMM_WORLD))

@@ -46,8 +46,8 @@ void convergence(std::ofstream& out, const std::string& face_gradient,
   mesh.distort_coarse_mesh = true;
   fvfsi::PoissonParameters parameters = manufactured_poisson<dim>();
   parameters.face_gradient = face_gradient == "quadratic"
-                                 ? fvfsi::PoissonParameters::FaceGradient::quadratic
-                                 : fvfsi::PoissonParameters::FaceGradient::linear;
+                               ? fvfsi::PoissonParameters::FaceGradient::quadratic
+                               : fvfsi::PoissonParameters::FaceGradient::linear;
 
   out << dim << "D, " << face_gradient << " face gradient: cells, max cell error, order, "
       << "max face-gradient error, order, L2 face-gradient error, order\n";

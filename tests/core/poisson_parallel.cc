@@ -20,7 +20,8 @@
 using namespace fvfsi_test;
 
 template <int dim>
-std::vector<std::pair<std::array<double, dim>, double>> centroid_values(const fvfsi::PoissonProblem<dim>& p)
+std::vector<std::pair<std::array<double, dim>, double>>
+centroid_values(const fvfsi::PoissonProblem<dim>& p)
 {
   std::vector<std::pair<std::array<double, dim>, double>> values;
   const auto& fv = p.geometry();
@@ -46,8 +47,8 @@ void compare(std::ofstream& out, const std::string& face_gradient)
   parameters.correction_tolerance = 1e-13;
   parameters.solver.reduction = 1e-10;
   parameters.face_gradient = face_gradient == "quadratic"
-                                 ? fvfsi::PoissonParameters::FaceGradient::quadratic
-                                 : fvfsi::PoissonParameters::FaceGradient::linear;
+                               ? fvfsi::PoissonParameters::FaceGradient::quadratic
+                               : fvfsi::PoissonParameters::FaceGradient::linear;
 
   fvfsi::PoissonProblem<dim> parallel(mesh, parameters, MPI_COMM_WORLD);
   parallel.run();
@@ -76,13 +77,14 @@ void compare(std::ofstream& out, const std::string& face_gradient)
       max_difference = std::max(max_difference, std::abs(v - it->second));
     }
   const std::string name = std::to_string(dim) + "D, " + face_gradient + " face gradient: ";
-  out << name << reference.size() << " cells, all matched by centroid: "
-      << yes_no(n_matched == reference.size()) << "\n";
+  out << name << reference.size()
+      << " cells, all matched by centroid: " << yes_no(n_matched == reference.size()) << "\n";
   out << name << "max |phi(np) - phi(np=1)| / max |phi| < 1e-10: "
       << yes_no(max_difference / max_phi < 1e-10) << "\n";
   if (std::getenv("FVFSI_TEST_VERBOSE") != nullptr)
-    std::cerr << "  [" << name << "max |phi(np) - phi(np=1)| / max |phi| = "
-              << max_difference / max_phi << std::endl;
+    std::cerr << "  [" << name
+              << "max |phi(np) - phi(np=1)| / max |phi| = " << max_difference / max_phi
+              << std::endl;
 }
 
 int main(int argc, char** argv)

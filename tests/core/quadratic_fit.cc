@@ -170,12 +170,14 @@ void test(std::ostream& out, const std::string& generator, const std::string& ar
     const double e = std::abs(laplacian.normal_gradient(f, phi, g, dirichlet, &H) - exact) / scale;
     record(faces[f].N == fvfsi::invalid_cell ? boundary_error : interior_error, e);
     if (faces[f].N != fvfsi::invalid_cell)
-      record(linear_error, std::abs(laplacian.normal_gradient(f, phi, g, dirichlet) - exact) / scale);
+      record(linear_error,
+             std::abs(laplacian.normal_gradient(f, phi, g, dirichlet) - exact) / scale);
   }
   check(out, "quadratic normal gradient = n.grad phi(r_f) on interior and processor faces",
         interior_error, tolerance);
-  check(out, "quadratic normal gradient = n.grad phi(r_f) on Dirichlet boundary and ghost_boundary "
-             "faces",
+  check(out,
+        "quadratic normal gradient = n.grad phi(r_f) on Dirichlet boundary and ghost_boundary "
+        "faces",
         boundary_error, tolerance);
   check(out, "contrast: linear normal gradient (Eq. 19) with the same g errs by more than 1e-3",
         Utilities::MPI::max(linear_error, MPI_COMM_WORLD) > 1e-3);

@@ -48,9 +48,11 @@ void compare(std::ofstream& out, const std::string& title, const fvfsi::AllParam
       if (const auto it = reference.find(x); it != reference.end())
       {
         ++matched;
-        max_difference = std::max({max_difference, std::abs(u[0] - it->second[0]), std::abs(u[1] - it->second[1])});
+        max_difference = std::max(
+          {max_difference, std::abs(u[0] - it->second[0]), std::abs(u[1] - it->second[1])});
       }
-  out << title << ": " << reference.size() << " cells, all matched: " << yes_no(matched == reference.size())
+  out << title << ": " << reference.size()
+      << " cells, all matched: " << yes_no(matched == reference.size())
       << ", max |u_np - u_1| / max |u_1| < 1e-8: " << yes_no(max_difference / max_u < 1e-8) << "\n";
 }
 
@@ -60,12 +62,12 @@ int main(int argc, char** argv)
   std::ofstream out = open_output();
   compare(out, "plate with a hole", *shipped_case("plate_hole", {"Solid/Outer tolerance=1e-12"}));
   compare(out, "Turek-Hron flag, 5 BDF2 steps",
-          *shipped_case("turek_hron_csm1", {"Mesh/Generator arguments=70: 4", "Solid/Transient=true",
-                                            "Time/Time step=0.01", "Time/End time=0.05",
-                                            "Solid/Outer tolerance=1e-12"}));
+          *shipped_case("turek_hron_csm1", {"Mesh/Generator arguments=70: 4",
+                                            "Solid/Transient=true", "Time/Time step=0.01",
+                                            "Time/End time=0.05", "Solid/Outer tolerance=1e-12"}));
   compare(out, "Turek-Hron flag, 5 BDF2 steps, Hessian correction",
-          *shipped_case("turek_hron_csm1", {"Mesh/Generator arguments=70: 4", "Solid/Transient=true",
-                                            "Time/Time step=0.01", "Time/End time=0.05",
-                                            "Solid/Outer tolerance=1e-12",
-                                            "Solid/Hessian correction=true"}));
+          *shipped_case("turek_hron_csm1",
+                        {"Mesh/Generator arguments=70: 4", "Solid/Transient=true",
+                         "Time/Time step=0.01", "Time/End time=0.05", "Solid/Outer tolerance=1e-12",
+                         "Solid/Hessian correction=true"}));
 }

@@ -23,14 +23,16 @@ struct Errors
 
 Errors run(const unsigned int n, const std::string& variant)
 {
-  const auto p = shipped_case("plate_hole", {"Mesh/Generator arguments=0.5: 2: " + std::to_string(n),
-                                             "Solid/Variant=" + variant, "Solid/Outer tolerance=1e-10",
-                                             "Output directory=out"});
+  const auto p =
+    shipped_case("plate_hole", {"Mesh/Generator arguments=0.5: 2: " + std::to_string(n),
+                                "Solid/Variant=" + variant, "Solid/Outer tolerance=1e-10",
+                                "Output directory=out"});
   std::filesystem::create_directories("out");
-  fvfsi::SolidScene<2> scene(p->mesh, p->solid, p->solid_scene, p->time, MPI_COMM_WORLD, ".", "out");
+  fvfsi::SolidScene<2> scene(p->mesh, p->solid, p->solid_scene, p->time, MPI_COMM_WORLD, ".",
+                             "out");
   scene.run();
-  return {static_cast<unsigned int>(scene.geometry().n_global_cells()), scene.results().max_displacement_error,
-          scene.results().max_stress_error[0].second};
+  return {static_cast<unsigned int>(scene.geometry().n_global_cells()),
+          scene.results().max_displacement_error, scene.results().max_stress_error[0].second};
 }
 
 int main(int argc, char** argv)
@@ -44,19 +46,24 @@ int main(int argc, char** argv)
     for (unsigned int i = 0; i < 2; ++i)
     {
       e[variant][i] = run(i == 0 ? 22 : 45, variant);
-      out << "  " << e[variant][i].cells << format("  %.3e  %.3e\n", e[variant][i].displacement, e[variant][i].stress);
+      out << "  " << e[variant][i].cells
+          << format("  %.3e  %.3e\n", e[variant][i].displacement, e[variant][i].stress);
     }
   }
   const auto& p = e["present"];
   const double h_ratio = std::sqrt(double(p[1].cells) / p[0].cells);
   const double order_u = std::log(p[0].displacement / p[1].displacement) / std::log(h_ratio);
   const double order_s = std::log(p[0].stress / p[1].stress) / std::log(h_ratio);
-  out << format("present: displacement order %.2f >= 1.9: ", order_u) << yes_no(order_u >= 1.9) << "\n";
-  out << format("present: hole stress order %.2f >= 1.9: ", order_s) << yes_no(order_s >= 1.9) << "\n";
-  out << "present: hole stress error on 968 cells <= 479 Pa: " << yes_no(p[0].stress <= 479) << "\n";
+  out << format("present: displacement order %.2f >= 1.9: ", order_u) << yes_no(order_u >= 1.9)
+      << "\n";
+  out << format("present: hole stress order %.2f >= 1.9: ", order_s) << yes_no(order_s >= 1.9)
+      << "\n";
+  out << "present: hole stress error on 968 cells <= 479 Pa: " << yes_no(p[0].stress <= 479)
+      << "\n";
   bool smallest = true;
   for (const std::string other : {"Demirdzic-Muzaferija", "Jasak-Weller"})
     for (unsigned int i = 0; i < 2; ++i)
-      smallest = smallest && p[i].displacement < e[other][i].displacement && p[i].stress < e[other][i].stress;
+      smallest = smallest && p[i].displacement < e[other][i].displacement &&
+                 p[i].stress < e[other][i].stress;
   out << "present has the smallest errors on both meshes: " << yes_no(smallest) << "\n";
 }

@@ -40,7 +40,8 @@ void run(std::ofstream& out)
   fvfsi::FVGeometry<dim> fv(tria);
   out << dim << "D: " << fv.n_global_cells() << " cells" << std::endl;
 
-  const auto total_volume = [&fv]() {
+  const auto total_volume = [&fv]()
+  {
     double V = 0;
     for (unsigned int c = 0; c < fv.n_owned_cells(); ++c)
       V += fv.cell_volume[c];
@@ -72,13 +73,17 @@ void run(std::ofstream& out)
         boundary += dV[f];
     }
     for (unsigned int c = 0; c < fv.n_owned_cells(); ++c)
-      cell_error = std::max(cell_error, std::abs(net[c] - (fv.cell_volume[c] - V_old[c])) / fv.cell_volume[c]);
+      cell_error =
+        std::max(cell_error, std::abs(net[c] - (fv.cell_volume[c] - V_old[c])) / fv.cell_volume[c]);
     const double domain_new = total_volume();
     domain_error = std::max(domain_error, std::abs(Utilities::MPI::sum(boundary, MPI_COMM_WORLD) -
-                                                   (domain_new - domain_old)) / domain_new);
+                                                   (domain_new - domain_old)) /
+                                            domain_new);
   }
-  check(out, format("%dD: sum_f dV_f = V_P(new) - V_P(old) in every cell, 3 steps", dim), cell_error, 1e-12);
-  check(out, format("%dD: boundary swept volumes = change of the domain volume", dim), domain_error, 1e-12);
+  check(out, format("%dD: sum_f dV_f = V_P(new) - V_P(old) in every cell, 3 steps", dim),
+        cell_error, 1e-12);
+  check(out, format("%dD: boundary swept volumes = change of the domain volume", dim), domain_error,
+        1e-12);
 
   Tensor<1, dim> t;
   for (unsigned int d = 0; d < dim; ++d)

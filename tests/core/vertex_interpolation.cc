@@ -139,8 +139,8 @@ void test(std::ostream& out, const std::string& generator, const std::string& ar
         const auto it = n_cells_around.find(k);
         ok = ok && it != n_cells_around.end() && double(it->second) == all_stencils[i + dim];
       }
-      out << "distinct vertices: " << n_cells_around.size() << " (expected " << expected_vertices << ")"
-          << std::endl;
+      out << "distinct vertices: " << n_cells_around.size() << " (expected " << expected_vertices
+          << ")" << std::endl;
     }
     check(out, "distinct vertex coordinates over all ranks = vertices of the mesh",
           !root || n_cells_around.size() == expected_vertices);
@@ -182,7 +182,8 @@ void test(std::ostream& out, const std::string& generator, const std::string& ar
     }
     check(out, "non-linear field: every rank computes bitwise the same vertex value", same);
     if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
-      check(out, "parallel: some vertices are computed by more than one rank", !root || n_shared > 0);
+      check(out, "parallel: some vertices are computed by more than one rank",
+            !root || n_shared > 0);
   }
 }
 
@@ -190,7 +191,8 @@ int main(int argc, char** argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream out = open_output();
-  const auto pow = [](unsigned int b, unsigned int e) {
+  const auto pow = [](unsigned int b, unsigned int e)
+  {
     unsigned int r = 1;
     while (e-- > 0)
       r *= b;

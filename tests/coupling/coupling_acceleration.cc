@@ -68,8 +68,9 @@ unsigned int solve(fvfsi::CouplingAcceleration& acceleration, const Model& model
   for (unsigned int k = 1; k <= 400; ++k)
   {
     const std::vector<double> d_tilde = model.solid_answer(d, b);
-    const fvfsi::InterfaceVector next = acceleration.next(
-      fvfsi::InterfaceVector(d.begin(), d.end()), fvfsi::InterfaceVector(d_tilde.begin(), d_tilde.end()));
+    const fvfsi::InterfaceVector next =
+      acceleration.next(fvfsi::InterfaceVector(d.begin(), d.end()),
+                        fvfsi::InterfaceVector(d_tilde.begin(), d_tilde.end()));
     d.assign(next.begin(), next.end());
     if (acceleration.relative_residual() <= 1e-10)
       return k;
@@ -90,8 +91,9 @@ int main(int argc, char** argv)
     b1[i] = 1e-3 * std::cos(0.7 * i);
     b2[i] = 1e-3 * std::cos(0.5 * i + 1);
   }
-  const auto iterations = [&](const std::string& method, const double omega, const unsigned int reuse,
-                              const bool second_step) {
+  const auto iterations = [&](const std::string& method, const double omega,
+                              const unsigned int reuse, const bool second_step)
+  {
     fvfsi::CouplingParameters p;
     for (const auto& [name, m] : fvfsi::CouplingParameters::method_names)
       if (name == method)
@@ -108,13 +110,14 @@ int main(int argc, char** argv)
                      aitken = iterations("Aitken", 0.4, 0, false),
                      iqn = iterations("IQN-ILS", 0.4, 0, false),
                      iqn_reuse = iterations("IQN-ILS", 0.4, 1, true);
-  out << "iterations to 1e-10 (0: none): fixed omega = 1: " << gauss_seidel << ", fixed 0.4: " << fixed
-      << ", Aitken: " << aitken << ", IQN-ILS: " << iqn << ", IQN-ILS second step reusing one step: "
-      << iqn_reuse << "\n";
+  out << "iterations to 1e-10 (0: none): fixed omega = 1: " << gauss_seidel
+      << ", fixed 0.4: " << fixed << ", Aitken: " << aitken << ", IQN-ILS: " << iqn
+      << ", IQN-ILS second step reusing one step: " << iqn_reuse << "\n";
   out << "fixed omega = 1 diverges: " << yes_no(gauss_seidel == 0) << "\n";
   out << "fixed 0.4 converges: " << yes_no(fixed > 0) << "\n";
   out << "Aitken faster than fixed 0.4: " << yes_no(aitken > 0 && aitken < fixed) << "\n";
   out << "IQN-ILS within n + 3 and faster than Aitken: "
       << yes_no(iqn > 0 && iqn <= n + 3 && iqn < aitken) << "\n";
-  out << "IQN-ILS with reuse: second step within 4: " << yes_no(iqn_reuse > 0 && iqn_reuse <= 4) << "\n";
+  out << "IQN-ILS with reuse: second step within 4: " << yes_no(iqn_reuse > 0 && iqn_reuse <= 4)
+      << "\n";
 }

@@ -33,9 +33,9 @@ struct Outcome
 
 Outcome run(const std::string& method, const std::string& relaxation)
 {
-  const auto p = shipped_case("fsi_pressure_column", {"Coupling/Method=" + method,
-                                                      "Coupling/Relaxation=" + relaxation,
-                                                      "Output directory=out"});
+  const auto p = shipped_case(
+    "fsi_pressure_column",
+    {"Coupling/Method=" + method, "Coupling/Relaxation=" + relaxation, "Output directory=out"});
   std::filesystem::create_directories("out");
   Outcome o;
   try
@@ -50,8 +50,8 @@ Outcome run(const std::string& method, const std::string& relaxation)
     o.error = e.what();
   }
   std::printf("%s omega %s: d = %.7e m, %u coupling iterations%s%s\n", method.c_str(),
-              relaxation.c_str(), o.d, o.iterations, o.error.empty() ? "" : ", error: ",
-              o.error.c_str());
+              relaxation.c_str(), o.d, o.iterations,
+              o.error.empty() ? "" : ", error: ", o.error.c_str());
   return o;
 }
 
@@ -62,11 +62,10 @@ int main(int argc, char** argv)
   const double exact = 5000 / (1e7 * 0.7 / (1.3 * 0.4) - 5000);
   const Outcome iqn = run("IQN-ILS", "0.4"), aitken = run("Aitken", "0.4"),
                 fixed = run("fixed", "0.4"), gauss_seidel = run("fixed", "1");
-  const auto close = [&](const Outcome& o) {
-    return o.error.empty() && std::abs(o.d - exact) < 1e-3 * exact;
-  };
-  out << "IQN-ILS: interface displacement within 0.1% of the static solution: " << yes_no(close(iqn))
-      << "\n";
+  const auto close = [&](const Outcome& o)
+  { return o.error.empty() && std::abs(o.d - exact) < 1e-3 * exact; };
+  out << "IQN-ILS: interface displacement within 0.1% of the static solution: "
+      << yes_no(close(iqn)) << "\n";
   out << "Aitken: within 0.1%: " << yes_no(close(aitken)) << "\n";
   out << "fixed relaxation 0.4: converges: " << yes_no(fixed.error.empty())
       << ", more than 3 times the iterations of IQN-ILS and of Aitken: "

@@ -65,8 +65,9 @@ struct Transfer
 
 /// Both transfers between patch `fluid_patch` of `fluid` and patch `solid_patch` of `solid`.
 template <int dim>
-Transfer transfer(const parallel::distributed::Triangulation<dim>& fluid, const unsigned int fluid_patch,
-                  const parallel::distributed::Triangulation<dim>& solid, const unsigned int solid_patch)
+Transfer
+transfer(const parallel::distributed::Triangulation<dim>& fluid, const unsigned int fluid_patch,
+         const parallel::distributed::Triangulation<dim>& solid, const unsigned int solid_patch)
 {
   const fvfsi::FVGeometry<dim> fluid_geometry(fluid), solid_geometry(solid);
   const fvfsi::InterfaceZone<dim> fluid_zone(fluid_geometry, {fluid_patch}, "fluid"),
@@ -113,7 +114,8 @@ Transfer transfer(const parallel::distributed::Triangulation<dim>& fluid, const 
 
 void print_flat(std::ofstream& out, const std::string& title, const Transfer& r)
 {
-  std::printf("%s: coverage %.17g %.17g force %.3g u %.3g gap %.3g\n", title.c_str(), r.min_coverage, r.max_coverage, r.force_difference, r.displacement_error, r.gap);
+  std::printf("%s: coverage %.17g %.17g force %.3g u %.3g gap %.3g\n", title.c_str(),
+              r.min_coverage, r.max_coverage, r.force_difference, r.displacement_error, r.gap);
   out << title << ": coverage 1 to 1e-12: "
       << yes_no(r.min_coverage > 1 - 1e-12 && r.max_coverage < 1 + 1e-12)
       << ", force conserved to 1e-12: " << yes_no(r.force_difference < 1e-12)
@@ -122,7 +124,8 @@ void print_flat(std::ofstream& out, const std::string& title, const Transfer& r)
 }
 
 /// Non-uniform steps: n[d] intervals growing geometrically by 1.3, adding up to extent[d].
-std::vector<std::vector<double>> steps(const std::vector<unsigned int>& n, const std::vector<double>& extent)
+std::vector<std::vector<double>> steps(const std::vector<unsigned int>& n,
+                                       const std::vector<double>& extent)
 {
   std::vector<std::vector<double>> s(n.size());
   for (unsigned int d = 0; d < n.size(); ++d)
@@ -176,15 +179,19 @@ int main(int argc, char** argv)
   {
     // (a) 2D: colorize gives y_min = id 2, y_max = id 3.
     parallel::distributed::Triangulation<2> fluid(comm), solid(comm);
-    GridGenerator::subdivided_hyper_rectangle(fluid, steps({9, 6}, {1, 1}), Point<2>(0, 0), Point<2>(1, 1), true);
-    GridGenerator::subdivided_hyper_rectangle(solid, steps({13, 2}, {1, 0.2}), Point<2>(0, -0.2), Point<2>(1, 0), true);
+    GridGenerator::subdivided_hyper_rectangle(fluid, steps({9, 6}, {1, 1}), Point<2>(0, 0),
+                                              Point<2>(1, 1), true);
+    GridGenerator::subdivided_hyper_rectangle(solid, steps({13, 2}, {1, 0.2}), Point<2>(0, -0.2),
+                                              Point<2>(1, 0), true);
     print_flat(out, "2D flat", transfer(fluid, 2, solid, 3));
   }
   {
     // (b) 3D: z_min = id 4, z_max = id 5.
     parallel::distributed::Triangulation<3> fluid(comm), solid(comm);
-    GridGenerator::subdivided_hyper_rectangle(fluid, steps({5, 4, 3}, {1, 1, 1}), Point<3>(0, 0, 0), Point<3>(1, 1, 1), true);
-    GridGenerator::subdivided_hyper_rectangle(solid, steps({3, 7, 2}, {1, 1, 0.2}), Point<3>(0, 0, -0.2), Point<3>(1, 1, 0), true);
+    GridGenerator::subdivided_hyper_rectangle(fluid, steps({5, 4, 3}, {1, 1, 1}), Point<3>(0, 0, 0),
+                                              Point<3>(1, 1, 1), true);
+    GridGenerator::subdivided_hyper_rectangle(solid, steps({3, 7, 2}, {1, 1, 0.2}),
+                                              Point<3>(0, 0, -0.2), Point<3>(1, 1, 0), true);
     print_flat(out, "3D flat", transfer(fluid, 4, solid, 5));
   }
   // (c) 2D circle: shell 0.5 < r < 1 (12 cells around; inner boundary id 0) around a disk r < 0.5

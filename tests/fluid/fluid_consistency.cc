@@ -40,7 +40,8 @@ Steady run(const std::string& name, std::vector<std::string> overrides, const do
   overrides.push_back("Output directory=out");
   const auto p = shipped_case(name, overrides);
   std::filesystem::create_directories("out");
-  fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, p->time, MPI_COMM_WORLD, ".", "out");
+  fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, p->time, MPI_COMM_WORLD, ".",
+                             "out");
   scene.run();
   Steady s;
   for (unsigned int c = 0; c < scene.geometry().n_owned_cells(); ++c)
@@ -74,7 +75,8 @@ void compare(std::ofstream& out, const std::string& title, const std::string& na
   {
     differences.push_back(std::abs(a.force[0] - b.force[0]) / std::abs(a.force[0]));
     differences.push_back(std::abs(a.force[1] - b.force[1]) / std::abs(a.force[1]));
-    out << ", drag " << format("%.1e", differences[2]) << ", lift " << format("%.1e", differences[3]);
+    out << ", drag " << format("%.1e", differences[2]) << ", lift "
+        << format("%.1e", differences[3]);
     std::printf("%s: drag %.10g %.10g, lift %.10g %.10g\n", title.c_str(), a.force[0], b.force[0],
                 a.force[1], b.force[1]);
   }

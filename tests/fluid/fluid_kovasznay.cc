@@ -11,8 +11,8 @@
 // (a probe is as accurate as the cells), and the probe columns of fluid_history.txt are named.
 // Errors are printed with 3 significant digits: the converged solution is independent of the
 // solver settings to ~1e-9 (steady tolerance 1e-9), far below that.
-#include <fvfsi/scenes/fluid_scene.h>
 #include <fvfsi/base/parsed_function.h>
+#include <fvfsi/scenes/fluid_scene.h>
 
 #include "../test_utilities.h"
 
@@ -36,7 +36,8 @@ int main(int argc, char** argv)
                                               "Fluid scene/Probes=A: 0.13, 0.41 | B: -0.31, 1.17 | "
                                               "C: 0.77, -0.21"});
     std::filesystem::create_directories("out");
-    fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, p->time, MPI_COMM_WORLD, ".", "out");
+    fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, p->time, MPI_COMM_WORLD, ".",
+                               "out");
     scene.run();
     const auto& res = scene.results();
     const std::array<double, 4> e = {res.max_velocity_error, res.l2_velocity_error,

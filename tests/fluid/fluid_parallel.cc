@@ -43,10 +43,10 @@ Run run(const fvfsi::AllParameters& p, MPI_Comm comm, const std::string& directo
   Run r;
   const auto& fv = scene.geometry();
   for (unsigned int c = 0; c < fv.n_owned_cells(); ++c)
-    r.values.emplace_back(std::array<double, 2>{{fv.centroid[c][0], fv.centroid[c][1]}},
-                          std::array<double, 3>{{scene.solver().velocity()[c][0],
-                                                 scene.solver().velocity()[c][1],
-                                                 scene.solver().kinematic_pressure().local_element(c)}});
+    r.values.emplace_back(
+      std::array<double, 2>{{fv.centroid[c][0], fv.centroid[c][1]}},
+      std::array<double, 3>{{scene.solver().velocity()[c][0], scene.solver().velocity()[c][1],
+                             scene.solver().kinematic_pressure().local_element(c)}});
   if (!p.fluid_scene.force_patches.empty())
     r.force = scene.body_force();
   for (unsigned int i = 0; i < scene.point_probes().size(); ++i)
@@ -99,8 +99,8 @@ void compare(std::ofstream& out, const std::string& title, const std::vector<Val
     ok = ok && d < 1e-8;
   }
   std::printf("\n");
-  out << title << ": " << reference.size() << " cells, all matched: "
-      << yes_no(matched == reference.size()) << ", u and p"
+  out << title << ": " << reference.size()
+      << " cells, all matched: " << yes_no(matched == reference.size()) << ", u and p"
       << (parallel.probes.empty() ? "" : " (cells and probes)") << (forces ? ", drag and lift" : "")
       << " of np equal np = 1 to 1e-8 relative: " << yes_no(ok) << "\n";
 }
@@ -114,8 +114,10 @@ int main(int argc, char** argv)
                                           "Fluid pressure solver/Residual reduction=1e-10",
                                           "Fluid scene/Output interval=0",
                                           "Fluid scene/Analysis window=0"};
-  std::vector<std::string> channel = {"Mesh/Generator arguments=12", "Time/Time step=0.002",
-                                      "Time/End time=0.04", "Fluid/Initial velocity=" + inflow,
+  std::vector<std::string> channel = {"Mesh/Generator arguments=12",
+                                      "Time/Time step=0.002",
+                                      "Time/End time=0.04",
+                                      "Fluid/Initial velocity=" + inflow,
                                       "Fluid/Velocity inlet=inlet: " + inflow,
                                       "Fluid scene/Probes=wake: 0.8, 0.2 | above: 0.4, 0.3"};
   channel.insert(channel.end(), tight.begin(), tight.end());

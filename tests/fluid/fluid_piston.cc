@@ -35,8 +35,8 @@ std::array<double, 2> study(std::ofstream& out, const std::vector<std::string>& 
       for (unsigned int i = 0; i < 2; ++i)
         order[i] = std::log2(previous[i] / e[i]);
     out << (n > 20 ? format("          %.2f", order[0]) : std::string("          -   "))
-        << format("   %.3e", e[1]) << (n > 20 ? format("          %.2f", order[1]) : std::string("          -"))
-        << "\n";
+        << format("   %.3e", e[1])
+        << (n > 20 ? format("          %.2f", order[1]) : std::string("          -")) << "\n";
     previous = e;
   }
   return order;

@@ -14,9 +14,9 @@
 // the time and convection terms with the SCL already substituted (fluid_solver.h), which is
 // identical to the conservative form exactly when the SCL holds; inconsistent mesh fluxes cost
 // conservation, not the uniform flow. So the SCL itself is what the first check guards.
+#include <fvfsi/ale/mesh_motion.h>
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/mesh/mesh_builder.h>
-#include <fvfsi/ale/mesh_motion.h>
 
 #include "../test_utilities.h"
 
@@ -30,13 +30,15 @@ std::vector<std::string> overrides_for_dim()
   if (dim == 2)
     return {};
   const std::string U = "1; 0.5; 0.25";
-  return {"Dimension=3", "Fluid/Body force=0; 0; 0",
+  return {"Dimension=3",
+          "Fluid/Body force=0; 0; 0",
           "Mesh/Patch names=0: left, 1: right, 2: bottom, 3: top, 4: front, 5: back",
           "Fluid/Initial velocity=" + U,
-          "Fluid/Velocity inlet=left: " + U + " | bottom: " + U + " | top: " + U + " | front: " + U +
-            " | back: " + U,
+          "Fluid/Velocity inlet=left: " + U + " | bottom: " + U + " | top: " + U +
+            " | front: " + U + " | back: " + U,
           "Mesh motion/Displacement=0.1*sin(2*pi*t)*sin(pi*x)*sin(2*pi*y)*sin(pi*z); "
-          "0.1*sin(3*pi*t)*sin(2*pi*x)*sin(pi*y)*sin(pi*z); 0.1*sin(pi*t)*sin(pi*x)*sin(pi*y)*sin(2*pi*z)"};
+          "0.1*sin(3*pi*t)*sin(2*pi*x)*sin(pi*y)*sin(pi*z); "
+          "0.1*sin(pi*t)*sin(pi*x)*sin(pi*y)*sin(2*pi*z)"};
 }
 
 /// Max over cells and time steps of the SCL residual / (V_P / dt), |u - U| / |U| and |p| / |U|^2.
@@ -92,9 +94,11 @@ std::array<double, 3> run(const bool swept_volumes)
     for (unsigned int c = 0; c < fv.n_owned_cells(); ++c)
     {
       const double V = fv.cell_volume[c];
-      error[0] = std::max(error[0], std::abs(c0 * V - c1 * V_old[c] + c2 * V_old2[c] - net[c]) * dt / V);
+      error[0] =
+        std::max(error[0], std::abs(c0 * V - c1 * V_old[c] + c2 * V_old2[c] - net[c]) * dt / V);
       error[1] = std::max(error[1], (fluid.velocity()[c] - U).norm() / U.norm());
-      error[2] = std::max(error[2], std::abs(fluid.kinematic_pressure().local_element(c)) / U.norm_square());
+      error[2] =
+        std::max(error[2], std::abs(fluid.kinematic_pressure().local_element(c)) / U.norm_square());
     }
     V_old2 = V_old;
     V_old = fv.cell_volume;
@@ -113,7 +117,8 @@ void check(std::ofstream& out)
   out << dim << "D, uniform flow kept: max |u - U| / |U| < 1e-10: " << yes_no(e[1] < 1e-10)
       << ", max |p| / |U|^2 < 1e-10: " << yes_no(e[2] < 1e-10) << "\n";
   const auto control = run<dim>(false);
-  out << dim << "D, control, face-centre mesh fluxes: SCL residual > 1e-6: " << yes_no(control[0] > 1e-6)
+  out << dim
+      << "D, control, face-centre mesh fluxes: SCL residual > 1e-6: " << yes_no(control[0] > 1e-6)
       << "\n";
 }
 

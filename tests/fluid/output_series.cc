@@ -22,7 +22,8 @@ std::vector<std::pair<double, std::string>> read_pvd(const std::string& name)
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::regex entry("<DataSet timestep=\"([^\"]+)\"[^>]*file=\"([^\"]+)\"");
   std::vector<std::pair<double, std::string>> entries;
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), entry); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), entry);
+       it != std::sregex_iterator(); ++it)
     entries.emplace_back(std::stod((*it)[1]), (*it)[2]);
   return entries;
 }
@@ -46,8 +47,9 @@ int main(int argc, char** argv)
   const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   {
     std::filesystem::create_directories("fluid_out");
-    const auto p = shipped_case("taylor_green", {"Time/End time=0.125", "Fluid scene/Output interval=1",
-                                                 "Mesh/Global refinements=3", "Output directory=fluid_out"});
+    const auto p =
+      shipped_case("taylor_green", {"Time/End time=0.125", "Fluid scene/Output interval=1",
+                                    "Mesh/Global refinements=3", "Output directory=fluid_out"});
     fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, p->time, MPI_COMM_WORLD, ".",
                                "fluid_out");
     scene.run();
@@ -57,8 +59,9 @@ int main(int argc, char** argv)
   }
   {
     std::filesystem::create_directories("fsi_out");
-    const auto p = shipped_case("fsi_pressure_column", {"Time/End time=0.02", "Fluid scene/Output interval=1",
-                                                        "Output directory=fsi_out"});
+    const auto p =
+      shipped_case("fsi_pressure_column", {"Time/End time=0.02", "Fluid scene/Output interval=1",
+                                           "Output directory=fsi_out"});
     fvfsi::FsiScene<2> scene(p->fsi_input(), MPI_COMM_WORLD, ".", "fsi_out");
     scene.run();
     if (root)

@@ -323,8 +323,8 @@ void PoissonFV<dim>::output_results(const unsigned int cycle) const
 {
   OutputFields<dim> fields(*fv);
   fields.add("phi", [&](const unsigned int c) { return phi.local_element(c); });
-  fields.add("error",
-             [&](const unsigned int c) { return phi.local_element(c) - exact.value(fv->centroid[c]); });
+  fields.add("error", [&](const unsigned int c)
+             { return phi.local_element(c) - exact.value(fv->centroid[c]); });
   VtuOutput<dim>(*fv, ".", "solution-" + std::to_string(cycle)).write(fields, 0, 0.0);
 }
 
@@ -370,8 +370,10 @@ void PoissonFV<dim>::run(const unsigned int n_cycles)
 // Errors end the program with a message.
 int main(int argc, char* argv[])
 {
-  return fvfsi_tutorial::main_program(argc, argv, "step-1", [&]() {
-    Step1::PoissonFV<2> problem;
-    problem.run(argc > 1 ? std::stoi(argv[1]) : 3);
-  });
+  return fvfsi_tutorial::main_program(argc, argv, "step-1",
+                                      [&]()
+                                      {
+                                        Step1::PoissonFV<2> problem;
+                                        problem.run(argc > 1 ? std::stoi(argv[1]) : 3);
+                                      });
 }

@@ -32,9 +32,9 @@
 #include "../tutorial.h"
 #include <fvfsi/fv/boundary_conditions.h>
 #include <fvfsi/fv/cell_fields.h>
+#include <fvfsi/fv/fv_operators.h>
 #include <fvfsi/fv/ghost_faces.h>
 #include <fvfsi/fv/gradients.h>
-#include <fvfsi/fv/fv_operators.h>
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/linear_solver.h>
 #include <fvfsi/fv/vertex_interpolation.h>
@@ -74,11 +74,11 @@ Tensor<1, dim> displacement(const Point<dim>& p)
   const double r = p.norm(), t = std::atan2(p[1], p[0]), c = a * T / (8 * mu), s = a / r;
   Tensor<1, dim> u;
   u[0] =
-      c * ((kappa + 1) / s * std::cos(t) + 2 * s * ((1 + kappa) * std::cos(t) + std::cos(3 * t)) -
-           2 * s * s * s * std::cos(3 * t));
+    c * ((kappa + 1) / s * std::cos(t) + 2 * s * ((1 + kappa) * std::cos(t) + std::cos(3 * t)) -
+         2 * s * s * s * std::cos(3 * t));
   u[1] =
-      c * ((kappa - 3) / s * std::sin(t) + 2 * s * ((1 - kappa) * std::sin(t) + std::sin(3 * t)) -
-           2 * s * s * s * std::sin(3 * t));
+    c * ((kappa - 3) / s * std::sin(t) + 2 * s * ((1 - kappa) * std::sin(t) + std::sin(3 * t)) -
+         2 * s * s * s * std::sin(3 * t));
   return u;
 }
 
@@ -89,7 +89,7 @@ Tensor<2, dim> stress(const Point<dim>& p)
   sigma[0][0] = T * (1 - s2 * (1.5 * std::cos(2 * t) + std::cos(4 * t)) + s4 * std::cos(4 * t));
   sigma[1][1] = T * (-s2 * (0.5 * std::cos(2 * t) - std::cos(4 * t)) - s4 * std::cos(4 * t));
   sigma[0][1] = sigma[1][0] =
-      T * (-s2 * (0.5 * std::sin(2 * t) + std::sin(4 * t)) + s4 * std::sin(4 * t));
+    T * (-s2 * (0.5 * std::sin(2 * t) + std::sin(4 * t)) + s4 * std::sin(4 * t));
   return sigma;
 }
 } // namespace Kirsch
@@ -228,7 +228,7 @@ void PlateWithHole::assemble_system()
   ScalarBoundaryConditions<dim> bc;
   for (const types::boundary_id id : triangulation.get_boundary_ids())
     bc.patch_type[id] =
-        (id == left || id == bottom) ? BoundaryType::dirichlet : BoundaryType::neumann;
+      (id == left || id == bottom) ? BoundaryType::dirichlet : BoundaryType::neumann;
   bc.value.assign(fv->faces.size(), 0.0);
   CellVector unused_rhs = fv->make_cell_vector();
   LinearSolverParameters parameters;
@@ -359,9 +359,9 @@ Tensor<2, dim> PlateWithHole::face_gradient(const unsigned int f) const
     return boundary_G[f];
   const Tensor<2, dim> G_P = cell_gradient(face.P);
   const Tensor<1, dim> g_n =
-      face.N == invalid_cell
-          ? (boundary_u[f] - u[face.P] - face.k_P * G_P) / face.d_n
-          : (u[face.N] - u[face.P] - face.k_N * cell_gradient(face.N) - face.k_P * G_P) / face.d_n;
+    face.N == invalid_cell
+      ? (boundary_u[f] - u[face.P] - face.k_P * G_P) / face.d_n
+      : (u[face.N] - u[face.P] - face.k_N * cell_gradient(face.N) - face.k_P * G_P) / face.d_n;
   return outer_product(face.n, g_n) + tangential_part(f);
 }
 
@@ -469,7 +469,7 @@ std::pair<double, double> PlateWithHole::errors() const
     if (fv->faces[f].kind == FaceKind::boundary && fv->faces[f].patch == hole)
     {
       const Tensor<2, dim> error =
-          cauchy_stress(boundary_G[f], lame) - Kirsch::stress(fv->faces[f].centre);
+        cauchy_stress(boundary_G[f], lame) - Kirsch::stress(fv->faces[f].centre);
       for (unsigned int i = 0; i < dim; ++i)
         for (unsigned int j = i; j < dim; ++j)
           stress_error = std::max(stress_error, std::abs(error[i][j]));
@@ -485,9 +485,10 @@ void PlateWithHole::output_results(const unsigned int cycle) const
 {
   OutputFields<dim> fields(*fv);
   fields.add_vector("u", [&](const unsigned int c) { return u[c]; });
-  fields.add("sigma_yy", [&](const unsigned int c) { return cauchy_stress(cell_gradient(c), lame)[1][1]; });
-  fields.add("displacement_error",
-             [&](const unsigned int c) { return (u[c] - Kirsch::displacement(fv->centroid[c])).norm(); });
+  fields.add("sigma_yy",
+             [&](const unsigned int c) { return cauchy_stress(cell_gradient(c), lame)[1][1]; });
+  fields.add("displacement_error", [&](const unsigned int c)
+             { return (u[c] - Kirsch::displacement(fv->centroid[c])).norm(); });
   VtuOutput<dim>(*fv, ".", "plate-" + std::to_string(cycle)).write(fields, 0, 0.0);
 }
 
@@ -526,8 +527,10 @@ void PlateWithHole::run(const std::vector<unsigned int>& n_values)
 // @sect3{The main function}
 int main(int argc, char* argv[])
 {
-  return fvfsi_tutorial::main_program(argc, argv, "step-2", []() {
-    Step2::PlateWithHole problem;
-    problem.run({11, 22, 45});
-  });
+  return fvfsi_tutorial::main_program(argc, argv, "step-2",
+                                      []()
+                                      {
+                                        Step2::PlateWithHole problem;
+                                        problem.run({11, 22, 45});
+                                      });
 }

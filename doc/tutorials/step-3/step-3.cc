@@ -46,9 +46,9 @@
 #include <fvfsi/fv/boundary_conditions.h>
 #include <fvfsi/fv/cell_fields.h>
 #include <fvfsi/fv/face_matrix.h>
+#include <fvfsi/fv/fv_operators.h>
 #include <fvfsi/fv/ghost_faces.h>
 #include <fvfsi/fv/gradients.h>
-#include <fvfsi/fv/fv_operators.h>
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/linear_solver.h>
 #include <fvfsi/fv/vertex_interpolation.h>
@@ -78,9 +78,9 @@ constexpr int dim = 2;
 // @sect3{The data}
 // The case in SI units. The patches (boundary ids) are those of the mesh generator
 // fvfsi_turek_hron_channel.
-constexpr double rho = 1000;   // density [kg/m^3] (only for the forces)
-constexpr double nu = 1e-3;    // kinematic viscosity [m^2/s]
-constexpr double H = 0.41;     // channel height [m]
+constexpr double rho = 1000; // density [kg/m^3] (only for the forces)
+constexpr double nu = 1e-3;  // kinematic viscosity [m^2/s]
+constexpr double H = 0.41;   // channel height [m]
 constexpr unsigned int inlet = 0, outlet = 1, walls = 2, cylinder = 3, flag = 4;
 
 // The inflow: u_x = 1.5 U 4 y (H - y) / H^2, mean U [m/s]; U = 0.2 m/s gives Re = U D / nu = 20,
@@ -127,11 +127,11 @@ private:
   void solve();
   void output_results() const;
 
-  const unsigned int n;      // cells on a quarter of the cylinder
-  const double U;            // mean inflow velocity [m/s]
-  const double alpha;        // momentum relaxation, sets the local pseudo time step
-  const double dt;           // time step [s], 0 for steady
-  const bool consistent;     // consistent (true) or classic Rhie-Chow face flux
+  const unsigned int n;  // cells on a quarter of the cylinder
+  const double U;        // mean inflow velocity [m/s]
+  const double alpha;    // momentum relaxation, sets the local pseudo time step
+  const double dt;       // time step [s], 0 for steady
+  const bool consistent; // consistent (true) or classic Rhie-Chow face flux
   MPI_Comm mpi_communicator;
   ConditionalOStream pcout;
   parallel::distributed::Triangulation<dim> triangulation;
@@ -218,9 +218,9 @@ void CylinderFlow::setup_system()
   for (const unsigned int patch : {inlet, outlet, walls, cylinder, flag})
   {
     velocity_bc.patch_type[patch] =
-        patch == outlet ? BoundaryType::neumann : BoundaryType::dirichlet;
+      patch == outlet ? BoundaryType::neumann : BoundaryType::dirichlet;
     pressure_bc.patch_type[patch] =
-        patch == outlet ? BoundaryType::dirichlet : BoundaryType::neumann;
+      patch == outlet ? BoundaryType::dirichlet : BoundaryType::neumann;
   }
   const unsigned int n_faces = fv->faces.size();
   velocity_bc.value.assign(n_faces, 0.0);
@@ -314,7 +314,7 @@ void CylinderFlow::update_pressure_boundary_values()
     const auto& face = fv->faces[f];
     if (face.kind == FaceKind::boundary)
       boundary_p[f] =
-          face.patch == outlet ? 0.0 : p.local_element(face.P) + face.d * grad_p[face.P];
+        face.patch == outlet ? 0.0 : p.local_element(face.P) + face.d * grad_p[face.P];
   }
   update_ghost_boundary_faces(*fv, boundary_p);
 }
@@ -397,8 +397,8 @@ void CylinderFlow::assemble_momentum()
     {
       momentum->diagonal[P] += std::max(phi, 0.0);
       for (unsigned int j = 0; j < dim; ++j)
-        B_rest[j].local_element(P) -= std::min(phi, 0.0) * boundary_u[f][j] +
-                                      std::max(phi, 0.0) * (boundary_u[f][j] - u[P][j]);
+        B_rest[j].local_element(P) -=
+          std::min(phi, 0.0) * boundary_u[f][j] + std::max(phi, 0.0) * (boundary_u[f][j] - u[P][j]);
     }
     else // inlet and walls: u_b given
     {
@@ -457,7 +457,7 @@ void CylinderFlow::solve_momentum()
   {
     for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
       rhs.local_element(c) =
-          B_rest[j].local_element(c) + B_time[j][c] - fv->cell_volume[c] * grad_p[c][j];
+        B_rest[j].local_element(c) + B_time[j][c] - fv->cell_volume[c] * grad_p[c][j];
     momentum_solver->solve(momentum_matrix, u.components[j], rhs, "momentum");
   }
   u.update_ghost_values();
@@ -533,16 +533,16 @@ void CylinderFlow::assemble_pressure_equation()
       continue;
     }
     const double inverse_a_star =
-        face.N == invalid_cell
-            ? 1 / a_star.local_element(face.P)
-            : face.w / a_star.local_element(face.P) + (1 - face.w) / a_star.local_element(face.N);
+      face.N == invalid_cell
+        ? 1 / a_star.local_element(face.P)
+        : face.w / a_star.local_element(face.P) + (1 - face.w) / a_star.local_element(face.N);
     a_star_f[f] = 1 / inverse_a_star;
     c0_face[f] = dt > 0 ? c0 : a_star_f[f] * (1 - alpha) / alpha;
     gamma_p[f] = 1 / (c0_face[f] + a_star_f[f]);
     if (!consistent) // classic: Gamma_f = (1 / a)_f, a = c0 + a*
-      gamma_p[f] = face.N == invalid_cell ? 1 / a.local_element(face.P)
-                                          : face.w / a.local_element(face.P) +
-                                                (1 - face.w) / a.local_element(face.N);
+      gamma_p[f] = face.N == invalid_cell
+                     ? 1 / a.local_element(face.P)
+                     : face.w / a.local_element(face.P) + (1 - face.w) / a.local_element(face.N);
     const double coefficient = gamma_p[f] * face.area / face.d_n;
     if (face.N == invalid_cell)
       pressure_equation->diagonal[face.P] += coefficient;
@@ -567,7 +567,7 @@ void CylinderFlow::compute_predicted_fluxes()
     momentum->off_diagonal_product(u.components[j], off_diagonal);
     for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
       h.components[j].local_element(c) =
-          (B_rest[j].local_element(c) - off_diagonal[c]) / fv->cell_volume[c];
+        (B_rest[j].local_element(c) - off_diagonal[c]) / fv->cell_volume[c];
   }
   h.update_ghost_values();
   for (unsigned int f = 0; f < fv->faces.size(); ++f)
@@ -585,7 +585,8 @@ void CylinderFlow::compute_predicted_fluxes()
     std::array<Tensor<1, dim>, dim> grad;
     if (!consistent) // classic: F*_f = S_f . ((h + c0 u^old) / a)_f
     {
-      const auto h_by_a_cell = [&](const unsigned int c) {
+      const auto h_by_a_cell = [&](const unsigned int c)
+      {
         Tensor<1, dim> value = h[c];
         for (unsigned int j = 0; j < dim; ++j)
           value[j] += c0_cell_ghosted.local_element(c) * u_old.components[j].local_element(c);
@@ -593,9 +594,9 @@ void CylinderFlow::compute_predicted_fluxes()
       };
       h_by_a = N == invalid_cell ? h_by_a_cell(P)
                                  : face.w * h_by_a_cell(P) + (1 - face.w) * h_by_a_cell(N);
-      m = face.centre - (N == invalid_cell ? fv->centroid[P]
-                                           : face.w * fv->centroid[P] +
-                                                 (1 - face.w) * fv->centroid[N]);
+      m = face.centre - (N == invalid_cell
+                           ? fv->centroid[P]
+                           : face.w * fv->centroid[P] + (1 - face.w) * fv->centroid[N]);
       for (unsigned int j = 0; j < dim; ++j)
         h_by_a[j] += m * (N == invalid_cell ? grad_u[j][P]
                                             : face.w * grad_u[j][P] + (1 - face.w) * grad_u[j][N]);
@@ -611,8 +612,8 @@ void CylinderFlow::compute_predicted_fluxes()
     }
     else
     {
-      h_by_a = face.w * h[P] / a_star.local_element(P) +
-               (1 - face.w) * h[N] / a_star.local_element(N);
+      h_by_a =
+        face.w * h[P] / a_star.local_element(P) + (1 - face.w) * h[N] / a_star.local_element(N);
       m = face.centre - (face.w * fv->centroid[P] + (1 - face.w) * fv->centroid[N]);
       for (unsigned int j = 0; j < dim; ++j)
         grad[j] = face.w * grad_u[j][P] + (1 - face.w) * grad_u[j][N];
@@ -672,16 +673,17 @@ void CylinderFlow::correct_fluxes_and_velocity()
 {
   for (unsigned int f = 0; f < fv->faces.size(); ++f)
     if (fv->faces[f].kind != FaceKind::ghost_boundary)
-      F[f] = gamma_p[f] == 0 ? F_star[f]
-                             : F_star[f] - gamma_p[f] * fv->faces[f].area *
-                                               operators->laplacian.normal_gradient(f, p, grad_p, pressure_bc);
+      F[f] = gamma_p[f] == 0
+               ? F_star[f]
+               : F_star[f] - gamma_p[f] * fv->faces[f].area *
+                               operators->laplacian.normal_gradient(f, p, grad_p, pressure_bc);
   update_pressure_boundary_values();
   update_pressure_gradient();
   for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
     for (unsigned int j = 0; j < dim; ++j)
       u.components[j].local_element(c) =
-          (h.components[j].local_element(c) + B_time[j][c] / fv->cell_volume[c] - grad_p[c][j]) /
-          a.local_element(c);
+        (h.components[j].local_element(c) + B_time[j][c] / fv->cell_volume[c] - grad_p[c][j]) /
+        a.local_element(c);
   u.update_ghost_values();
 }
 
@@ -779,10 +781,9 @@ void CylinderFlow::output_results() const
   fields.add_vector("u", [&](const unsigned int c) { return u[c]; });
   fields.add("p", [&](const unsigned int c) { return rho * p.local_element(c); });
   fields.add("vorticity", [&](const unsigned int c) { return grad_u[1][c][0] - grad_u[0][c][1]; });
-  const std::string name =
-      dt > 0 ? "cylinder-transient"
-             : std::string(consistent ? "cylinder-" : "cylinder-classic-") +
-                   std::to_string(static_cast<int>(100 * alpha + 0.5));
+  const std::string name = dt > 0 ? "cylinder-transient"
+                                  : std::string(consistent ? "cylinder-" : "cylinder-classic-") +
+                                      std::to_string(static_cast<int>(100 * alpha + 0.5));
   VtuOutput<dim>(*fv, ".", name).write(fields, 0, 0.0);
 }
 
@@ -826,7 +827,8 @@ void CylinderFlow::run(const unsigned int n_time_steps, const unsigned int inter
 // outer correctors, 3D). Steady (dt = 0): returns the converged force and sets n_steps.
 // Transient: n_steps time steps, the force every `interval` steps into `history`.
 Tensor<1, dim> library_force(const unsigned int n, const double U, const double alpha,
-                             const double dt, unsigned int& n_steps, const unsigned int interval = 1,
+                             const double dt, unsigned int& n_steps,
+                             const unsigned int interval = 1,
                              std::vector<std::array<double, 3>>* history = nullptr)
 {
   parallel::distributed::Triangulation<dim> triangulation(MPI_COMM_WORLD);
@@ -834,8 +836,8 @@ Tensor<1, dim> library_force(const unsigned int n, const double U, const double 
   mesh.generator = "fvfsi_turek_hron_channel";
   mesh.generator_arguments = std::to_string(n);
   mesh.n_global_refinements = 0;
-  mesh.patch_names = {{inlet, "inlet"}, {outlet, "outlet"}, {walls, "walls"},
-                      {cylinder, "cylinder"}, {flag, "flag"}};
+  mesh.patch_names = {
+    {inlet, "inlet"}, {outlet, "outlet"}, {walls, "walls"}, {cylinder, "cylinder"}, {flag, "flag"}};
   make_mesh(mesh, triangulation);
   const FVGeometry<dim> fv(triangulation);
 
@@ -846,8 +848,7 @@ Tensor<1, dim> library_force(const unsigned int n, const double U, const double 
   prm.momentum_relaxation = alpha;
   prm.steady_tolerance = 1e-9;
   prm.convection = FluidParameters::Convection::linear_upwind;
-  prm.velocity_inlet =
-      "inlet: 1.5*" + Utilities::to_string(U) + "*4*y*(0.41-y)/0.41^2; 0";
+  prm.velocity_inlet = "inlet: 1.5*" + Utilities::to_string(U) + "*4*y*(0.41-y)/0.41^2; 0";
   prm.outlet = "outlet: 0";
   prm.wall = "walls, cylinder, flag";
   // FluidParameters::declare() sets these defaults for .prm files; set them here.
@@ -878,8 +879,8 @@ Tensor<1, dim> library_force(const unsigned int n, const double U, const double 
         history->push_back(std::array<double, 3>{{clock.time(), f[0], f[1]}});
         const double courant = fluid.courant_number(); // collective
         if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-          std::cout << "  fvfsi: t = " << clock.time() << " s, Courant number "
-                    << courant << std::endl;
+          std::cout << "  fvfsi: t = " << clock.time() << " s, Courant number " << courant
+                    << std::endl;
       }
     }
   return force();
@@ -893,7 +894,8 @@ Tensor<1, dim> library_force(const unsigned int n, const double U, const double 
 std::string row(const std::string& name, const double alpha, const Tensor<1, dim>& force,
                 const Tensor<1, dim>& first)
 {
-  const auto difference = [](const double x, const double x0) {
+  const auto difference = [](const double x, const double x0)
+  {
     char text[32];
     const double d = std::abs(x - x0) / std::abs(x0);
     if (d < 1e-5)

@@ -28,15 +28,15 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <fvfsi/base/selection.h>
 #include <fvfsi/base/time_control.h>
 #include <fvfsi/fv/cell_fields.h>
-#include <fvfsi/fv/gradients.h>
 #include <fvfsi/fv/fv_operators.h>
+#include <fvfsi/fv/gradients.h>
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/linear_solver.h>
 #include <fvfsi/fv/vertex_interpolation.h>
 #include <fvfsi/mesh/fv_geometry.h>
-#include <fvfsi/base/selection.h>
 #include <fvfsi/mesh/mesh_parameters.h>
 
 #include <array>
@@ -124,7 +124,7 @@ namespace fvfsi
       std::string name;
       unsigned int id;
       std::unique_ptr<dealii::FunctionParser<dim>> expression; ///< null when set from outside
-      std::vector<dealii::Tensor<1, dim>> given;               ///< per vertex, when set from outside
+      std::vector<dealii::Tensor<1, dim>> given; ///< per vertex, when set from outside
     };
     std::vector<MovingPatch> moving;
     MovingPatch& moving_patch(const std::string& name);
@@ -134,10 +134,10 @@ namespace fvfsi
     CellVector rhs_boundary; ///< the Dirichlet sources of the assembled matrix, per unit value
     FaceVector gamma;
     ScalarBoundaryConditions<dim> bc;
-    std::array<CellVector, dim> d_cell;                ///< cell displacements (last solve)
+    std::array<CellVector, dim> d_cell; ///< cell displacements (last solve)
     std::array<CellGradient<dim>, dim> grad_d;
-    std::vector<dealii::Tensor<1, dim>> d_vertex;      ///< vertex displacements
-    std::vector<int> boundary_vertex;                  ///< -1 interior, else 0 fixed / 1 moving
+    std::vector<dealii::Tensor<1, dim>> d_vertex; ///< vertex displacements
+    std::vector<int> boundary_vertex;             ///< -1 interior, else 0 fixed / 1 moving
     // Vertex values of ghost cells whose vertices no owned cell shares come from their owner,
     // through the vertex dofs of an FE_Q(1)^dim DoFHandler (a ghosted vector).
     dealii::DoFHandler<dim> vertex_dofs;

@@ -17,7 +17,8 @@ namespace fvfsi
 
   /// The items of `entry` (`name: value | ...`; empty: none). Throws a std::runtime_error naming
   /// `parameter` (e.g. `Fluid/Velocity inlet`) for an item without `:` or without a name.
-  std::vector<NamedValue> parse_named_values(const std::string& entry, const std::string& parameter);
+  std::vector<NamedValue> parse_named_values(const std::string& entry,
+                                             const std::string& parameter);
 
   /// The names of a comma-separated list (trimmed, empty items dropped).
   std::vector<std::string> parse_names(const std::string& entry);

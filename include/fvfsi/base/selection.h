@@ -40,10 +40,12 @@ namespace fvfsi
       pattern += (pattern.empty() ? "" : "|") + name;
     prm.declare_entry(entry, selection_name(names, member), dealii::Patterns::Selection(pattern),
                       documentation);
-    prm.add_action(entry, [&member, names](const std::string& text) {
-      for (const auto& [name, value] : names)
-        if (name == text)
-          member = value;
-    });
+    prm.add_action(entry,
+                   [&member, names](const std::string& text)
+                   {
+                     for (const auto& [name, value] : names)
+                       if (name == text)
+                         member = value;
+                   });
   }
 } // namespace fvfsi

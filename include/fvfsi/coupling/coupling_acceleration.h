@@ -43,9 +43,9 @@ namespace fvfsi
     };
     static const SelectionNames<Method> method_names;
     Method method = Method::iqn_ils;
-    double relaxation = 0.5;         ///< omega of fixed relaxation and of the first iterations
+    double relaxation = 0.5;           ///< omega of fixed relaxation and of the first iterations
     unsigned int fixed_iterations = 2; ///< Aitken / IQN-ILS: fixed iterations that start a step
-    double tolerance = 1e-6;         ///< |r|_2 / |d~|_2 below which a time step has converged
+    double tolerance = 1e-6;           ///< |r|_2 / |d~|_2 below which a time step has converged
     unsigned int max_iterations = 100;
     unsigned int reuse_time_steps = 0; ///< IQN-ILS: keep V, W of this many earlier time steps
 

@@ -61,12 +61,12 @@ namespace fvfsi
     unsigned int n_faces() const { return face_centre.size(); }
     unsigned int n_points() const { return points.size(); }
 
-    std::string name;                                            ///< for messages
-    std::vector<dealii::Point<dim>> points;                      ///< unique face vertices [m]
+    std::string name;                                                 ///< for messages
+    std::vector<dealii::Point<dim>> points;                           ///< unique face vertices [m]
     std::vector<std::array<unsigned int, n_face_points>> face_points; ///< cyclic, into `points`
-    std::vector<dealii::Point<dim>> face_centre;                 ///< r_f [m]
-    std::vector<dealii::Tensor<1, dim>> face_normal;             ///< unit normal out of the mesh
-    std::vector<double> face_area;                               ///< S_f [m^(dim-1)]
+    std::vector<dealii::Point<dim>> face_centre;                      ///< r_f [m]
+    std::vector<dealii::Tensor<1, dim>> face_normal; ///< unit normal out of the mesh
+    std::vector<double> face_area;                   ///< S_f [m^(dim-1)]
 
     /// (local face index in FVGeometry::faces, zone face index) of this rank's owned faces.
     const std::vector<std::pair<unsigned int, unsigned int>>& local_faces() const

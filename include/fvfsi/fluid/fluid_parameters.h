@@ -30,19 +30,19 @@ namespace fvfsi
   {
     FluidParameters();
 
-    double rho = 1000; ///< density [kg/m^3]
-    double nu = 1e-3;  ///< kinematic viscosity [m^2/s]
+    double rho = 1000;                     ///< density [kg/m^3]
+    double nu = 1e-3;                      ///< kinematic viscosity [m^2/s]
     std::string body_force = "0; 0";       ///< g [m/s^2], vector expression of x, y[, z], t
     std::string initial_velocity = "0; 0"; ///< u(x, t = 0) [m/s]
 
-    bool transient = true; ///< false: steady (relaxed pseudo time steps to convergence)
-    double momentum_relaxation = 0.95;        ///< steady: alpha, the local pseudo time step
-    double steady_tolerance = 1e-8;           ///< steady: stop when the relative change is below
+    bool transient = true;             ///< false: steady (relaxed pseudo time steps to convergence)
+    double momentum_relaxation = 0.95; ///< steady: alpha, the local pseudo time step
+    double steady_tolerance = 1e-8;    ///< steady: stop when the relative change is below
     unsigned int max_steady_iterations = 5000; ///< steady: pseudo time step limit
 
-    unsigned int outer_correctors = 1; ///< PIMPLE outer loops per time step (1 = PISO)
-    bool flux_extrapolation = true;    ///< BDF2: first outer loop convects with 2 F^n - F^(n-1)
-    unsigned int pressure_correctors = 2;    ///< PISO pressure correctors per outer loop
+    unsigned int outer_correctors = 1;    ///< PIMPLE outer loops per time step (1 = PISO)
+    bool flux_extrapolation = true;       ///< BDF2: first outer loop convects with 2 F^n - F^(n-1)
+    unsigned int pressure_correctors = 2; ///< PISO pressure correctors per outer loop
     unsigned int non_orthogonal_correctors = 2; ///< extra pressure solves for Eq. 19's correction
     bool momentum_predictor = true;
     unsigned int preconditioner_update_interval = 10; ///< time steps between ILU/AMG rebuilds

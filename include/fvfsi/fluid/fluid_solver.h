@@ -250,13 +250,13 @@ namespace fvfsi
     // Momentum equation of the current time step (owned cells).
     std::array<std::vector<double>, dim> B_time; ///< V (c1 u^o - c2 u^oo)
     std::array<CellVector, dim> B_rest;          ///< every other explicit source
-    CellVector a;                  ///< a_P = A_P / V_P [1/s], ghosted
-    CellVector a_star;             ///< a*_P = a_P - c0, the spatial part [1/s], ghosted
-    CellVectorField<dim> h;        ///< h_P [m/s^2], ghosted
-    FaceVector a_star_f;           ///< a*_f = 1 / (1 / a*)_f
-    std::vector<double> c0_cell;   ///< c0 of each owned cell (steady: local pseudo time step)
-    FaceVector c0_face;            ///< c0_f (= c1_f: backward Euler or steady)
-    FaceVector F_star, gamma_p;    ///< F_f without its pressure part; Gamma_f = 1 / (c0 + a*_f)
-    CellVector pressure_rhs;       ///< -div F* and the outlet sources (without the correction)
+    CellVector a;                                ///< a_P = A_P / V_P [1/s], ghosted
+    CellVector a_star;           ///< a*_P = a_P - c0, the spatial part [1/s], ghosted
+    CellVectorField<dim> h;      ///< h_P [m/s^2], ghosted
+    FaceVector a_star_f;         ///< a*_f = 1 / (1 / a*)_f
+    std::vector<double> c0_cell; ///< c0 of each owned cell (steady: local pseudo time step)
+    FaceVector c0_face;          ///< c0_f (= c1_f: backward Euler or steady)
+    FaceVector F_star, gamma_p;  ///< F_f without its pressure part; Gamma_f = 1 / (c0 + a*_f)
+    CellVector pressure_rhs;     ///< -div F* and the outlet sources (without the correction)
   };
 } // namespace fvfsi

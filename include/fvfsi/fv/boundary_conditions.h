@@ -37,7 +37,8 @@ namespace fvfsi
     {
       const auto it = patch_type.find(face.patch);
       if (it == patch_type.end())
-        throw std::runtime_error("no boundary condition for patch id " + std::to_string(face.patch));
+        throw std::runtime_error("no boundary condition for patch id " +
+                                 std::to_string(face.patch));
       return it->second;
     }
   };
@@ -59,7 +60,7 @@ namespace fvfsi
     FaceConditions(const FVGeometry<dim>& geometry, const MeshParameters& mesh,
                    const std::vector<Condition>& conditions, const ComponentCount& n_components,
                    const std::string& solver, const std::string& hint)
-      : face(geometry.faces.size())
+        : face(geometry.faces.size())
     {
       std::map<unsigned int, Entry> by_patch;
       for (const auto& c : conditions)
@@ -79,7 +80,8 @@ namespace fvfsi
         {
           const auto it = by_patch.find(geometry.faces[f].patch);
           if (it == by_patch.end())
-            throw std::runtime_error(solver + ": patch `" + mesh.patch_name(geometry.faces[f].patch) +
+            throw std::runtime_error(solver + ": patch `" +
+                                     mesh.patch_name(geometry.faces[f].patch) +
                                      "` has no boundary condition (" + hint + ")");
           face[f] = it->second;
         }

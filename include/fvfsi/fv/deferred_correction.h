@@ -66,7 +66,8 @@ namespace fvfsi
       double max_change = 0, max_phi = 0;
       for (unsigned int c = 0; c < phi.locally_owned_size(); ++c)
       {
-        max_change = std::max(max_change, std::abs(phi.local_element(c) - phi_old.local_element(c)));
+        max_change =
+          std::max(max_change, std::abs(phi.local_element(c) - phi_old.local_element(c)));
         max_phi = std::max(max_phi, std::abs(phi.local_element(c)));
       }
       const MPI_Comm comm = phi.get_mpi_communicator();

@@ -18,9 +18,7 @@ namespace fvfsi
   {
   public:
     explicit FVOperators(const FVGeometry<dim>& geometry)
-      : vertex_interpolation(geometry)
-      , gauss_green(geometry)
-      , laplacian(geometry)
+        : vertex_interpolation(geometry), gauss_green(geometry), laplacian(geometry)
     {
     }
 

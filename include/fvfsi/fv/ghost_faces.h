@@ -20,11 +20,11 @@ namespace fvfsi
     static_assert(std::is_trivially_copyable_v<T> && sizeof(T) % sizeof(double) == 0);
     constexpr unsigned int n = sizeof(T) / sizeof(double);
     using Cell = typename FVGeometry<dim>::active_cell_iterator;
-    const auto local = [&geometry](const Cell& cell) {
-      return geometry.partitioner()->global_to_local(cell->dof_index(0));
-    };
+    const auto local = [&geometry](const Cell& cell)
+    { return geometry.partitioner()->global_to_local(cell->dof_index(0)); };
     // Per cell: face number, then the n doubles of its value, for each boundary face.
-    const auto pack = [&](const Cell& cell) -> dealii::std_cxx17::optional<std::vector<double>> {
+    const auto pack = [&](const Cell& cell) -> dealii::std_cxx17::optional<std::vector<double>>
+    {
       std::vector<double> data;
       for (const unsigned int f : geometry.cell_faces(local(cell)))
         if (geometry.faces[f].N == invalid_cell)
@@ -36,7 +36,8 @@ namespace fvfsi
         }
       return data;
     };
-    const auto unpack = [&](const Cell& cell, const std::vector<double>& data) {
+    const auto unpack = [&](const Cell& cell, const std::vector<double>& data)
+    {
       const auto& faces = geometry.cell_faces(local(cell));
       for (unsigned int i = 0; i < data.size(); i += n + 1)
         for (const unsigned int f : faces)

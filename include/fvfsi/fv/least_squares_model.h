@@ -29,10 +29,7 @@ namespace fvfsi
   {
   public:
     /// `filter` as above (0: keep every column that is not exactly dependent).
-    explicit LeastSquaresModel(const double filter = 0)
-      : filter(filter)
-    {
-    }
+    explicit LeastSquaresModel(const double filter = 0) : filter(filter) {}
 
     /// Add the newest pair of columns; `tag` marks them (e.g. with their time step).
     void add_column(const VectorType& dR, const VectorType& dX, const unsigned int tag = 0)
@@ -61,9 +58,8 @@ namespace fvfsi
       dealii::ImplicitQR<VectorType> qr;
       const double filter2 = filter * filter;
       qr.connect_append_column_slot(
-        [filter2](const dealii::Vector<double>&, const double& rho2, const double& norm2) {
-          return rho2 > filter2 * norm2 && rho2 > 0;
-        });
+        [filter2](const dealii::Vector<double>&, const double& rho2, const double& norm2)
+        { return rho2 > filter2 * norm2 && rho2 > 0; });
       std::vector<const Columns*> kept;
       for (const auto& column : columns)
         if (column.dR.l2_norm() > 0 && qr.append_column(column.dR))

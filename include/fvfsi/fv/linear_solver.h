@@ -28,8 +28,8 @@ namespace fvfsi
     };
     Method method = Method::cg;
     Preconditioner preconditioner = Preconditioner::amg;
-    double reduction = 1e-6;            ///< relative residual reduction per solve
-    double absolute_tolerance = 1e-14;  ///< ... or this absolute residual
+    double reduction = 1e-6;           ///< relative residual reduction per solve
+    double absolute_tolerance = 1e-14; ///< ... or this absolute residual
     unsigned int max_iterations = 2000;
 
     /// Declares `subsection <name>` (e.g. "Linear solver").

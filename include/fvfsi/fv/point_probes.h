@@ -40,8 +40,9 @@ namespace fvfsi
     /// The value of probe i: on the owning rank `value(c, x - r_c)` with c the local index of the
     /// cell that holds the point, summed over the ranks. Collective.
     template <typename T>
-    T evaluate(unsigned int i,
-               const std::function<T(unsigned int c, const dealii::Tensor<1, dim>& dx)>& value) const
+    T evaluate(
+      unsigned int i,
+      const std::function<T(unsigned int c, const dealii::Tensor<1, dim>& dx)>& value) const
     {
       T local{};
       if (cell[i] != dealii::numbers::invalid_unsigned_int)
@@ -54,7 +55,7 @@ namespace fvfsi
     std::vector<std::string> names;
     std::vector<dealii::Point<dim>> points;
     const FVGeometry<dim>* geometry = nullptr;
-    std::vector<unsigned int> cell;  ///< local index of the owned cell holding the point, or invalid
-    std::vector<double> n_found;     ///< how many ranks found the point
+    std::vector<unsigned int> cell; ///< local index of the owned cell holding the point, or invalid
+    std::vector<double> n_found;    ///< how many ranks found the point
   };
 } // namespace fvfsi

@@ -82,7 +82,8 @@ namespace fvfsi
                  CellHessian<dim>& hessian) const;
 
     /// H of each component of the vector field `u` (ghosts up to date); the face data are vectors.
-    void compute(const CellVectorField<dim>& u, const std::vector<dealii::Tensor<1, dim>>& face_values,
+    void compute(const CellVectorField<dim>& u,
+                 const std::vector<dealii::Tensor<1, dim>>& face_values,
                  const std::vector<dealii::Tensor<1, dim>>& normal_derivatives,
                  std::array<CellHessian<dim>, dim>& hessian) const;
 

@@ -36,7 +36,8 @@ namespace fvfsi
   {
   public:
     /// Create (truncate) `file_name` and write the header of `columns` (rank 0 of `comm`).
-    HistoryFile(const std::string& file_name, const std::vector<std::string>& columns, MPI_Comm comm);
+    HistoryFile(const std::string& file_name, const std::vector<std::string>& columns,
+                MPI_Comm comm);
 
     /// Append one line (as many values as columns; rank 0 writes, the others ignore it).
     void write_line(const std::vector<double>& values);

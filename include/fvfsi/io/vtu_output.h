@@ -19,10 +19,7 @@ namespace fvfsi
   class OutputFields
   {
   public:
-    explicit OutputFields(const FVGeometry<dim>& geometry)
-      : geometry(geometry)
-    {
-    }
+    explicit OutputFields(const FVGeometry<dim>& geometry) : geometry(geometry) {}
 
     /// The field `name` with the value `value(c)` in every owned cell c.
     template <typename Value>
@@ -52,7 +49,8 @@ namespace fvfsi
   {
   public:
     /// Writes `<directory>/<base_name>_<step>.pvtu` (+ one .vtu per rank) and `<base_name>.pvd`.
-    VtuOutput(const FVGeometry<dim>& geometry, const std::string& directory, const std::string& base_name);
+    VtuOutput(const FVGeometry<dim>& geometry, const std::string& directory,
+              const std::string& base_name);
 
     /// Write `fields` as step `step` at time `time` [s] and rewrite the .pvd record of all steps
     /// written so far (collective).

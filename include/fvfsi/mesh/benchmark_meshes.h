@@ -50,5 +50,6 @@ namespace fvfsi
   void make_cavity_plate(const std::string& arguments, dealii::Triangulation<2>& tria);
 
   template <int dim>
-  void make_benchmark_mesh(const std::string& name, const std::string& arguments, dealii::Triangulation<dim>& tria);
+  void make_benchmark_mesh(const std::string& name, const std::string& arguments,
+                           dealii::Triangulation<dim>& tria);
 } // namespace fvfsi

@@ -5,6 +5,7 @@
 // decomposition, stored, and recomputed only by reinit() when the vertices move. Face loops read
 // these arrays; they never recompute geometry.
 
+#include <deal.II/base/geometry_info.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/partitioner.h>
 #include <deal.II/base/point.h>
@@ -12,7 +13,6 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_dgq.h>
-#include <deal.II/base/geometry_info.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include <array>
@@ -41,10 +41,10 @@ namespace fvfsi
   /// Which cells a face separates, and so who assembles it.
   enum class FaceKind : unsigned char
   {
-    interior,       ///< between two locally owned cells
-    processor,      ///< between a locally owned cell P and a ghost cell N
-    boundary,       ///< a domain-boundary face of a locally owned cell
-    ghost_boundary  ///< a domain-boundary face of a ghost cell (only for vertex stencils)
+    interior,      ///< between two locally owned cells
+    processor,     ///< between a locally owned cell P and a ghost cell N
+    boundary,      ///< a domain-boundary face of a locally owned cell
+    ghost_boundary ///< a domain-boundary face of a ghost cell (only for vertex stencils)
   };
 
   template <int dim>
@@ -60,15 +60,15 @@ namespace fvfsi
     /// True on exactly one rank for every face of the mesh: use it for global sums over faces.
     bool counted_here = true;
 
-    dealii::Point<dim> centre;     ///< r_f [m]
-    dealii::Tensor<1, dim> S;      ///< S_f n_f, pointing out of P [m^(dim-1)]
-    double area = 0;               ///< S_f [m^(dim-1)]
-    dealii::Tensor<1, dim> n;      ///< n_f, unit normal out of P
-    dealii::Tensor<1, dim> d;      ///< d_f = r_N - r_P (boundary: r_f - r_P) [m]
-    double d_n = 0;                ///< d_fn = n_f . d_f [m]
-    dealii::Tensor<1, dim> k_P;    ///< k_P = (I - n n) . (r_f - r_P)  (Eq. 21)
-    dealii::Tensor<1, dim> k_N;    ///< k_N = (I - n n) . (r_N - r_f)  (Eq. 22), zero at a boundary
-    double w = 1;                  ///< phi_f = w phi_P + (1 - w) phi_N (linear interpolation)
+    dealii::Point<dim> centre;  ///< r_f [m]
+    dealii::Tensor<1, dim> S;   ///< S_f n_f, pointing out of P [m^(dim-1)]
+    double area = 0;            ///< S_f [m^(dim-1)]
+    dealii::Tensor<1, dim> n;   ///< n_f, unit normal out of P
+    dealii::Tensor<1, dim> d;   ///< d_f = r_N - r_P (boundary: r_f - r_P) [m]
+    double d_n = 0;             ///< d_fn = n_f . d_f [m]
+    dealii::Tensor<1, dim> k_P; ///< k_P = (I - n n) . (r_f - r_P)  (Eq. 21)
+    dealii::Tensor<1, dim> k_N; ///< k_N = (I - n n) . (r_N - r_f)  (Eq. 22), zero at a boundary
+    double w = 1;               ///< phi_f = w phi_P + (1 - w) phi_N (linear interpolation)
 
     /// Triangulation vertex indices, in cyclic order counter-clockwise about n_f.
     std::array<unsigned int, max_vertices> vertices;

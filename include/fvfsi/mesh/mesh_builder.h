@@ -16,7 +16,8 @@ namespace fvfsi
    * hanging faces (fvfsi's FV operators need conforming meshes).
    */
   template <int dim>
-  void make_mesh(const MeshParameters& params, dealii::parallel::distributed::Triangulation<dim>& tria,
+  void make_mesh(const MeshParameters& params,
+                 dealii::parallel::distributed::Triangulation<dim>& tria,
                  const std::string& prm_directory = ".");
 
   /**
@@ -26,6 +27,6 @@ namespace fvfsi
    * ranks, produces the same mesh (np = 2 can then be compared with np = 1).
    */
   template <int dim>
-  void distort_interior_vertices(dealii::parallel::distributed::Triangulation<dim>& tria, double factor,
-                                 unsigned int seed);
+  void distort_interior_vertices(dealii::parallel::distributed::Triangulation<dim>& tria,
+                                 double factor, unsigned int seed);
 } // namespace fvfsi

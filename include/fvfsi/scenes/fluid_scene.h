@@ -45,7 +45,8 @@ namespace fvfsi
     double mean = 0, amplitude = 0, frequency = 0;
     unsigned int n_periods = 0; ///< full periods between the first and last up-crossing
   };
-  PeriodicStatistics periodic_statistics(const std::vector<double>& t, const std::vector<double>& q);
+  PeriodicStatistics periodic_statistics(const std::vector<double>& t,
+                                         const std::vector<double>& q);
 
   /// What a fluid run found.
   struct FluidResults
@@ -63,7 +64,8 @@ namespace fvfsi
   public:
     FluidScene(const MeshParameters& mesh_parameters, const FluidParameters& fluid_parameters,
                const FluidSceneParameters& scene_parameters, const TimeParameters& time,
-               MPI_Comm comm, const std::string& prm_directory, const std::string& output_directory);
+               MPI_Comm comm, const std::string& prm_directory,
+               const std::string& output_directory);
 
     void run();
     void write_summary(Summary& summary) const;

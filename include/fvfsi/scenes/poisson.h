@@ -52,9 +52,9 @@ namespace fvfsi
   struct PoissonResults
   {
     dealii::types::global_cell_index n_cells = 0;
-    double h = 0;                     ///< (domain measure / n_cells)^(1/dim) [m]
-    double max_cell_error = 0;        ///< max_P |phi_P - phi(r_P)|
-    double l2_cell_error = 0;         ///< sqrt(sum_P V_P (phi_P - phi(r_P))^2)
+    double h = 0;              ///< (domain measure / n_cells)^(1/dim) [m]
+    double max_cell_error = 0; ///< max_P |phi_P - phi(r_P)|
+    double l2_cell_error = 0;  ///< sqrt(sum_P V_P (phi_P - phi(r_P))^2)
     /// max over interior faces of |n_f . (grad phi)_f - n_f . grad phi(r_f)| (Eq. 19)
     double max_face_gradient_error = 0;
     /// sqrt(sum_f e_f^2 S_f d_fn) over interior faces, e_f the error above

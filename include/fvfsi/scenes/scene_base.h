@@ -100,7 +100,8 @@ namespace fvfsi
 
   template <int dim>
   template <typename Value>
-  CellErrors SingleMeshScene<dim>::cell_errors(const std::string& exact, const std::string& parameter,
+  CellErrors SingleMeshScene<dim>::cell_errors(const std::string& exact,
+                                               const std::string& parameter,
                                                const unsigned int n_components, const Value& value,
                                                const bool up_to_a_constant) const
   {
@@ -117,7 +118,8 @@ namespace fvfsi
           offset += fv->cell_volume[c] * (value(c, k) - f.value(fv->centroid[c], k));
           volume += fv->cell_volume[c];
         }
-      offset = dealii::Utilities::MPI::sum(offset, comm) / dealii::Utilities::MPI::sum(volume, comm);
+      offset =
+        dealii::Utilities::MPI::sum(offset, comm) / dealii::Utilities::MPI::sum(volume, comm);
     }
     CellErrors e;
     for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)

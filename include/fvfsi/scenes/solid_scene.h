@@ -46,7 +46,8 @@ namespace fvfsi
   public:
     SolidScene(const MeshParameters& mesh_parameters, const SolidParameters& solid_parameters,
                const SolidSceneParameters& scene_parameters, const TimeParameters& time,
-               MPI_Comm comm, const std::string& prm_directory, const std::string& output_directory);
+               MPI_Comm comm, const std::string& prm_directory,
+               const std::string& output_directory);
 
     void run();
     void write_summary(Summary& summary) const;

@@ -10,8 +10,9 @@ namespace fvfsi
 {
   struct LameParameters
   {
-    double mu = 0;     ///< shear modulus [Pa]
-    double lambda = 0; ///< first Lame parameter [Pa] (2D plane stress: the reduced 2 mu nu / (1 - nu))
+    double mu = 0; ///< shear modulus [Pa]
+    double lambda =
+      0; ///< first Lame parameter [Pa] (2D plane stress: the reduced 2 mu nu / (1 - nu))
     bool nonlinear = false; ///< St. Venant-Kirchhoff (true) or linear elastic
     /// The implicit diffusivity K = 2 mu + lambda of Eq. 8.
     double K() const { return 2 * mu + lambda; }
@@ -30,7 +31,8 @@ namespace fvfsi
   /// Force per reference area n . (Sigma . F^T) on a face with reference normal n.
   template <int dim>
   dealii::Tensor<1, dim> first_piola_traction(const dealii::Tensor<2, dim>& G,
-                                              const dealii::Tensor<1, dim>& n, const LameParameters& m)
+                                              const dealii::Tensor<1, dim>& n,
+                                              const LameParameters& m)
   {
     const dealii::Tensor<2, dim> S = second_piola(G, m);
     if (!m.nonlinear)
@@ -52,7 +54,8 @@ namespace fvfsi
   /// Deformed area vector per reference area: n' S'/S = det(F) F^-T n (Nanson's formula).
   template <int dim>
   dealii::Tensor<1, dim> deformed_area_vector(const dealii::Tensor<2, dim>& G,
-                                              const dealii::Tensor<1, dim>& n, const LameParameters& m)
+                                              const dealii::Tensor<1, dim>& n,
+                                              const LameParameters& m)
   {
     if (!m.nonlinear)
       return n;

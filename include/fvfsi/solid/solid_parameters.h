@@ -39,8 +39,8 @@ namespace fvfsi
   {
     enum class Model
     {
-      linear_elastic,      ///< small strain
-      st_venant_kirchhoff  ///< finite strain, total Lagrangian (Eqs 4-9)
+      linear_elastic,     ///< small strain
+      st_venant_kirchhoff ///< finite strain, total Lagrangian (Eqs 4-9)
     };
     enum class Plane
     {
@@ -58,14 +58,14 @@ namespace fvfsi
     static const SelectionNames<Variant> variant_names;
 
     Model model = Model::linear_elastic;
-    Plane plane = Plane::strain;          ///< 2D only
-    double E = 1e7;                       ///< Young's modulus [Pa]
-    double nu = 0.3;                      ///< Poisson's ratio [-]
-    double rho = 1000;                    ///< density rho_0 [kg/m^3]
-    std::string body_force = "0; 0";      ///< b [m/s^2], vector expression of x, y[, z], t
+    Plane plane = Plane::strain;     ///< 2D only
+    double E = 1e7;                  ///< Young's modulus [Pa]
+    double nu = 0.3;                 ///< Poisson's ratio [-]
+    double rho = 1000;               ///< density rho_0 [kg/m^3]
+    std::string body_force = "0; 0"; ///< b [m/s^2], vector expression of x, y[, z], t
     Variant variant = Variant::present;
 
-    bool transient = false;               ///< false: steady (no inertia)
+    bool transient = false; ///< false: steady (no inertia)
     /// Outer (segregated) iterations per time step: stop when max |du| / max |u| < tolerance.
     double outer_tolerance = 1e-6;
     unsigned int max_outer_iterations = 1000;

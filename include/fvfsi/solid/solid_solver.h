@@ -88,7 +88,10 @@ namespace fvfsi
     /// grad u at face f, as the chosen variant computes it for the face forces.
     dealii::Tensor<2, dim> face_gradient(unsigned int f) const;
     /// u on boundary face f [m] (fixed value, or extrapolated as in Eqs 23-24).
-    const dealii::Tensor<1, dim>& boundary_displacement(unsigned int f) const { return boundary_u[f]; }
+    const dealii::Tensor<1, dim>& boundary_displacement(unsigned int f) const
+    {
+      return boundary_u[f];
+    }
     /// Cauchy stress at cell c and at face f [Pa].
     dealii::Tensor<2, dim> cell_stress(unsigned int c) const;
     dealii::Tensor<2, dim> face_stress(unsigned int f) const;
@@ -111,7 +114,6 @@ namespace fvfsi
     void set_external_traction(const std::vector<dealii::Tensor<1, dim>>& traction);
 
   private:
-
     using Variant = SolidParameters::Variant;
     /// The outer iterations' unknowns (dim blocks of owned cells) for the acceleration.
     using BlockVector = dealii::LinearAlgebra::distributed::BlockVector<double>;
@@ -148,7 +150,8 @@ namespace fvfsi
     std::vector<dealii::Tensor<1, dim>> given_traction;
     void evaluate_given_tractions();
     dealii::FunctionParser<dim> body_force;
-    std::array<std::vector<double>, dim> body_force_value; ///< b at the owned cell centres, this step
+    std::array<std::vector<double>, dim>
+      body_force_value; ///< b at the owned cell centres, this step
     std::vector<dealii::Tensor<1, dim>> external_traction;
 
     std::array<dealii::TrilinosWrappers::SparseMatrix, dim> matrix;
@@ -164,10 +167,10 @@ namespace fvfsi
     CellVectorField<dim> u, u_old, u_old2, v_old, v_old2;
 
     // Derived from u in update_gradients().
-    std::array<CellGradient<dim>, dim> grad_u;       ///< grad_u[j] = grad u_j
-    std::array<std::vector<double>, dim> vertex_u;   ///< vertex values of u_j
-    std::vector<dealii::Tensor<1, dim>> boundary_u;  ///< u_b per boundary face
-    std::vector<dealii::Tensor<2, dim>> boundary_G;  ///< grad u per boundary face (Eq. 24 iterate)
+    std::array<CellGradient<dim>, dim> grad_u;      ///< grad_u[j] = grad u_j
+    std::array<std::vector<double>, dim> vertex_u;  ///< vertex values of u_j
+    std::vector<dealii::Tensor<1, dim>> boundary_u; ///< u_b per boundary face
+    std::vector<dealii::Tensor<2, dim>> boundary_G; ///< grad u per boundary face (Eq. 24 iterate)
     /// Vertices on symmetry planes (with the plane's normal) and on displacement boundaries.
     std::vector<std::pair<unsigned int, dealii::Tensor<1, dim>>> symmetry_vertex_normals;
     std::map<unsigned int, const dealii::FunctionParser<dim>*> fixed_vertex_function;
