@@ -85,6 +85,8 @@ namespace fvfsi
   void make_cavity_channel(const std::string& arguments, Triangulation<2>& tria)
   {
     const double h = cell_size("fvfsi_cavity_channel", arguments);
+    // The function is one list of blocks (the drawing in the header comment, block by block):
+    // longer than a screen, but it reads as the mesh's drawing.
 
     // Geometry [m].
     const double L = 14, H = 1, x_0 = 2, x_1 = 6, depth = 1, r = 0.25;
