@@ -272,7 +272,7 @@ namespace fvfsi
   }
 
   template <int dim>
-  void FluidSolver<dim>::solve_pressure()
+  void FluidSolver<dim>::solve_pressure(const bool last)
   {
     TimerOutput::Scope scope(timer_output, "pressure solve");
     // Continuity sum_f F_f = 0 with F_f = F*_f - Gamma_f S_f (n.grad p)_f: the Laplacian of p
@@ -295,6 +295,14 @@ namespace fvfsi
     DeferredCorrection control;
     control.max_iterations = prm.non_orthogonal_correctors + 1;
     control.update_after_last = false;
+    // Only the last solve of the time step needs the full reduction: its residual is the
+    // continuity error left in F; the earlier ones (started from the previous pressure) are
+    // corrected by the solves after them.
+    if (prm.pressure_corrector_reduction > 0)
+    {
+      control.reduction = prm.pressure_corrector_reduction;
+      control.last_reduction = last ? -1 : prm.pressure_corrector_reduction;
+    }
     solve_deferred_correction(
       control, pressure_solver, pressure_matrix, pressure_rhs, p,
       [this](CellVector& rhs)

@@ -42,6 +42,7 @@ namespace fvfsi
     grad_p = CellGradient<dim>(geometry);
     vertex_p.assign(geometry.vertices().size(), 0.0);
     p = geometry.make_cell_vector();
+    p.update_ghost_values(); // p = 0 is readable everywhere, ghosts included
     a = geometry.make_cell_vector();
     a_star = geometry.make_cell_vector();
     pressure_rhs = geometry.make_cell_vector();
@@ -339,7 +340,7 @@ namespace fvfsi
     try
     {
       for (unsigned int outer = 0; outer < prm.outer_correctors; ++outer)
-        solve_outer_iteration();
+        solve_outer_iteration(outer + 1 == prm.outer_correctors);
     }
     catch (const std::exception& e)
     {
@@ -368,7 +369,7 @@ namespace fvfsi
   }
 
   template <int dim>
-  void FluidSolver<dim>::solve_outer_iteration()
+  void FluidSolver<dim>::solve_outer_iteration(const bool last)
   {
     // One PISO sequence: momentum predictor with the latest fluxes, then pressure correctors.
     update_velocity_boundary_values();
@@ -385,7 +386,7 @@ namespace fvfsi
     for (unsigned int corrector = 0; corrector < prm.pressure_correctors; ++corrector)
     {
       compute_predicted_fluxes();
-      solve_pressure();
+      solve_pressure(last && corrector + 1 == prm.pressure_correctors);
       correct_fluxes();
       update_pressure_boundary_values();
       update_pressure_gradient();

@@ -211,6 +211,10 @@ namespace fvfsi
       run_transient();
     compute_errors();
     fluid->timer().print_summary();
+    const auto& pressure = fluid->pressure_linear_solver();
+    pcout << "fvfsi: fluid pressure: " << pressure.n_solves() << " linear solves, "
+          << pressure.n_iterations() / std::max(1.0, double(pressure.n_solves()))
+          << " iterations per solve\n";
   }
 
   template <int dim>

@@ -58,6 +58,9 @@ namespace fvfsi
     std::string velocity_inlet, outlet, wall, symmetry;
 
     LinearSolverParameters momentum_solver, pressure_solver;
+    /// Residual reduction of every pressure solve of a time step but its last (0: the pressure
+    /// solver's Residual reduction for all).
+    double pressure_corrector_reduction = 0;
 
     void declare(dealii::ParameterHandler& prm);
     /// The boundary conditions listed in the four entries; throws naming a malformed entry.

@@ -153,6 +153,8 @@ namespace fvfsi
     /// Velocity u [m/s], pressure p [Pa] and vorticity [1/s] (2D: dv/dx - du/dy; 3D: its
     /// magnitude) as output fields.
     void add_output_fields(OutputFields<dim>& fields) const;
+    /// The pressure's linear solver (for its solve and iteration counts).
+    const LinearSolver& pressure_linear_solver() const { return pressure_solver; }
     /// Wall time per part of the algorithm, for the run's log.
     dealii::TimerOutput& timer() { return timer_output; }
 
@@ -176,7 +178,8 @@ namespace fvfsi
     void update_pressure_gradient();
 
     // The steps of one PISO time step.
-    void solve_outer_iteration();
+    /// One PISO sequence; `last`: the last outer loop of the time step.
+    void solve_outer_iteration(bool last);
     void assemble_momentum();
     void add_convection_correction(unsigned int f, double phi);
     /// The viscous and convective terms of boundary face f (relative flux phi).
@@ -186,7 +189,9 @@ namespace fvfsi
     void solve_momentum();
     void assemble_pressure_matrix();
     void compute_predicted_fluxes();
-    void solve_pressure();
+    /// `last`: the last pressure corrector of the time step, whose last solve gets the full
+    /// Residual reduction (the others: Corrector residual reduction).
+    void solve_pressure(bool last);
     void correct_fluxes();
     void correct_velocity();
     void shift_time_levels();

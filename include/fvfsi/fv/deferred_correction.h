@@ -30,6 +30,9 @@ namespace fvfsi
     /// false: no gradient update after the last solve (the PISO flux correction needs the
     /// gradient of the correction that was solved with).
     bool update_after_last = true;
+    /// Residual reductions of the linear solves but the last, and of the last (< 0: the
+    /// solver's own; see LinearSolver::solve).
+    double reduction = -1, last_reduction = -1;
   };
 
   struct DeferredCorrectionResult
@@ -57,7 +60,8 @@ namespace fvfsi
       add_explicit(rhs);
       if (control.tolerance > 0)
         phi_old = phi;
-      result.linear_iterations += solver.solve(A, phi, rhs, what);
+      result.linear_iterations += solver.solve(
+        A, phi, rhs, what, k < control.max_iterations ? control.reduction : control.last_reduction);
       result.iterations = k;
       if (k < control.max_iterations || control.update_after_last)
         update();

@@ -1,7 +1,9 @@
 #pragma once
-// Krylov solve of an assembled FV system with Trilinos (AztecOO CG/GMRES, ML AMG or ILU/Jacobi).
+// Krylov solve of an assembled FV system (Trilinos matrix): CG by deal.II's SolverCG directly on
+// the cell vectors, GMRES by AztecOO; Trilinos ML AMG, Ifpack ILU or Jacobi preconditioners.
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -45,13 +47,35 @@ namespace fvfsi
     void initialize(const dealii::TrilinosWrappers::SparseMatrix& matrix);
 
     /// Solve matrix x = b, starting from x. Returns the number of iterations. Throws a
-    /// std::runtime_error naming `what` if the solver fails.
+    /// std::runtime_error naming `what` if the solver fails. `reduction` >= 0 replaces the
+    /// parameters' Residual reduction for this solve (e.g. the PISO correctors before the last).
     unsigned int solve(const dealii::TrilinosWrappers::SparseMatrix& matrix, CellVector& x,
-                       const CellVector& b, const std::string& what);
+                       const CellVector& b, const std::string& what, double reduction = -1);
+
+    /// Number of solve() calls and their Krylov iterations so far.
+    unsigned long n_solves() const { return solve_count; }
+    unsigned long n_iterations() const { return iteration_count; }
 
   private:
+    /// CG by deal.II's SolverCG on the cell vectors themselves (the Trilinos matrix and
+    /// preconditioner take LinearAlgebra::distributed::Vector): no copies into Epetra vectors,
+    /// no AztecOO set-up and no separate initial residual per solve.
+    unsigned int solve_cg(const dealii::TrilinosWrappers::SparseMatrix& matrix, CellVector& x,
+                          const CellVector& b, const std::string& what, double reduction);
+    /// GMRES by AztecOO, on copies of x and b.
+    unsigned int solve_gmres(const dealii::TrilinosWrappers::SparseMatrix& matrix, CellVector& x,
+                             const CellVector& b, const std::string& what, double reduction);
+    /// Run `attempt`; if it fails, rebuild the preconditioner for `matrix`, call `restart` and
+    /// try once more (see linear_solver.cc). Returns the iterations of the failed attempt.
+    template <typename Attempt, typename Restart>
+    unsigned int with_one_retry(const dealii::TrilinosWrappers::SparseMatrix& matrix,
+                                dealii::SolverControl& control, const std::string& what,
+                                const Attempt& attempt, const Restart& restart);
+
     LinearSolverParameters parameters;
     std::unique_ptr<dealii::TrilinosWrappers::PreconditionBase> preconditioner;
     dealii::TrilinosWrappers::MPI::Vector x_trilinos, b_trilinos;
+    double matrix_norm = 0; ///< |A|_inf of the matrix of the last initialize()
+    unsigned long solve_count = 0, iteration_count = 0;
   };
 } // namespace fvfsi
