@@ -43,6 +43,14 @@ namespace fvfsi
     prm.add_parameter("Reuse time steps", reuse_time_steps,
                       "IQN-ILS: also use the columns of this many earlier time steps (0: none).",
                       Patterns::Integer(0, 20));
+    prm.add_parameter(
+      "Start time", start_time,
+      "Time [s] from which fluid and solid are coupled. Before it the solid is held "
+      "in its initial state (at rest) and the fluid runs alone on the fixed mesh, "
+      "as the paper does for Turek-Hron FSI2/FSI3 (full inflow from the first "
+      "step, coupling from 2 s): the flow develops without an impulsive load on "
+      "the solid. 0: coupled from the first time step.",
+      Patterns::Double(0));
     prm.leave_subsection();
   }
 

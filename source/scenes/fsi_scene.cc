@@ -1,9 +1,11 @@
 #include <deal.II/base/utilities.h>
 
+#include <fvfsi/io/progress.h>
 #include <fvfsi/mesh/mesh_builder.h>
 #include <fvfsi/scenes/fsi_scene.h>
 
 #include <cmath>
+#include <iomanip>
 #include <stdexcept>
 
 namespace fvfsi
@@ -164,6 +166,7 @@ namespace fvfsi
     {
       TimerOutput::Scope scope(timer, "solid");
       solid->solve_current_step(); // 2d
+      result.solid_outer_iterations += solid->outer_iterations();
     }
     return solid_interface_displacement(); // 2e: d~ (section 3.5.2)
   }
@@ -173,6 +176,15 @@ namespace fvfsi
   {
     // 1: the new time level, and the predictor: linear extrapolation of d.
     clock.advance();
+    if (clock.time() <= prm.coupling.start_time + 1e-9 * clock.time_step())
+    {
+      // Before the coupling starts: the fluid alone on the fixed mesh, the solid at rest (its
+      // time levels stay zero, so the first coupled step starts it from rest).
+      TimerOutput::Scope scope(timer, "fluid");
+      fluid->solve_time_step();
+      record_time_history(0, 0);
+      return 0;
+    }
     fluid->begin_time_step();
     solid->begin_time_step();
     acceleration->new_time_step();
@@ -274,6 +286,7 @@ namespace fvfsi
           << " solid faces, coupling "
           << selection_name(CouplingParameters::method_names, prm.coupling.method) << "\n";
     const unsigned int total = clock.n_steps();
+    const Progress progress;
     for (unsigned int step = 1; step <= total; ++step)
     {
       unsigned int iterations = 0;
@@ -289,12 +302,19 @@ namespace fvfsi
         throw;
       }
       result.n_time_steps = step;
+      result.n_coupled_steps += iterations > 0;
       result.total_coupling_iterations += iterations;
       result.max_coupling_iterations = std::max(result.max_coupling_iterations, iterations);
       if (step % fluid_scene_parameters.progress_interval == 0 || step == total)
-        pcout << "fvfsi: FSI step " << step << "/" << total << ", t = " << clock.time() << " s, "
-              << iterations << " coupling iterations (mean "
-              << double(result.total_coupling_iterations) / step << ")\n";
+      {
+        pcout << "fvfsi: FSI step " << step << "/" << total << ", t = " << clock.time() << " s, ";
+        if (iterations > 0)
+          pcout << iterations << " coupling iterations (mean " << std::setprecision(3)
+                << result.mean_coupling_iterations() << ")";
+        else
+          pcout << "fluid alone (before Coupling/Start time)";
+        pcout << ", " << progress.elapsed_and_left(step, total) << "\n" << std::setprecision(6);
+      }
       if (fluid_scene_parameters.output_interval > 0 &&
           step % fluid_scene_parameters.output_interval == 0)
         output_results();
@@ -312,8 +332,11 @@ namespace fvfsi
     summary.set_result("solid_cells", solid_fv->n_global_cells());
     summary.set_result("time_steps", result.n_time_steps);
     summary.set_result("coupling_iterations", result.total_coupling_iterations);
+    summary.set_result("coupled_time_steps", result.n_coupled_steps);
+    summary.set_result("mean_coupling_iterations_per_step", result.mean_coupling_iterations());
     summary.set_result("max_coupling_iterations_per_step", result.max_coupling_iterations);
     summary.set_result("min_cell_volume_ratio", result.min_volume_ratio);
+    summary.set_result("solid_outer_iterations", result.solid_outer_iterations);
     if (!fluid_scene_parameters.force_patches.empty() && !history_drag.empty())
     {
       summary.set_result("drag", history_drag.back());

@@ -48,6 +48,9 @@ namespace fvfsi
     double tolerance = 1e-6;           ///< |r|_2 / |d~|_2 below which a time step has converged
     unsigned int max_iterations = 100;
     unsigned int reuse_time_steps = 0; ///< IQN-ILS: keep V, W of this many earlier time steps
+    /// Time before which the solid is held in its initial state and the fluid runs alone on the
+    /// fixed mesh [s] (0: coupled from the first step).
+    double start_time = 0;
 
     void declare(dealii::ParameterHandler& prm);
   };

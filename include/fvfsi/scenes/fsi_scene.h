@@ -53,7 +53,13 @@ namespace fvfsi
   struct FsiResults
   {
     unsigned int n_time_steps = 0;
+    unsigned int n_coupled_steps = 0; ///< from Coupling/Start time on
     unsigned int total_coupling_iterations = 0, max_coupling_iterations = 0;
+    unsigned long solid_outer_iterations = 0; ///< over all coupling iterations
+    double mean_coupling_iterations() const
+    {
+      return n_coupled_steps == 0 ? 0 : double(total_coupling_iterations) / n_coupled_steps;
+    }
     double min_volume_ratio = 1; ///< min over cells and steps of V_P / V_P(reference), fluid
   };
 
