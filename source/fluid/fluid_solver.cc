@@ -231,10 +231,10 @@ namespace fvfsi
   template <int dim>
   void FluidSolver<dim>::move_mesh(const std::vector<double>& swept_volume)
   {
-    if (!prm.transient)
-      throw std::runtime_error(
-        "Fluid: the mesh can only move in a transient run (Fluid/Transient)");
     AssertDimension(swept_volume.size(), geometry.faces.size());
+    // Steady (a steady FSI iteration moves the mesh between steady solves): the state is at rest
+    // on the new mesh, no mesh flux (compute_mesh_fluxes() keeps F^mesh = 0), only the geometry
+    // changes.
     swept = swept_volume;
     operators.reinit(); // their coefficients depend on the geometry
     update_volume_ratios();

@@ -31,13 +31,18 @@ namespace fvfsi
         solid_mesh_parameters(input.solid_mesh), fluid_parameters(input.fluid),
         fluid_scene_parameters(input.fluid_scene), solid_parameters(input.solid),
         solid_scene_parameters(input.solid_scene), prm(input.fsi), prm_directory(prm_directory),
-        output_directory(output_directory),
+        output_directory(output_directory), steady(!input.fluid.transient),
         pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0),
         timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times), clock(input.time),
         fluid_tria(comm), solid_tria(comm), probes(input.solid_scene.probes, "Solid scene/Probes")
   {
-    if (!fluid_parameters.transient)
-      throw std::runtime_error("FSI: the fluid must be transient (Fluid/Transient = true)");
+    // Transient fluid with a transient or quasi-static solid; or both steady (solve_steady()).
+    if (steady && solid_parameters.transient)
+      throw std::runtime_error("FSI: a steady fluid (Fluid/Transient = false) needs a steady "
+                               "solid: set Solid/Transient = false");
+    if (steady && prm.coupling.start_time > 0)
+      throw std::runtime_error("FSI: Coupling/Start time has no meaning in a steady run "
+                               "(Fluid/Transient = false): set it to 0");
     if (fluid_scene_parameters.mesh_motion.type != MeshMotionParameters::Type::laplace)
       throw std::runtime_error(
         "FSI: the fluid mesh must follow the interface: set Mesh motion/Type = "
@@ -89,12 +94,21 @@ namespace fvfsi
   {
     fluid_output = std::make_unique<VtuOutput<dim>>(*fluid_fv, output_directory, "fluid");
     solid_output = std::make_unique<VtuOutput<dim>>(*solid_fv, output_directory, "solid");
-    std::vector<std::string> columns = {"t", "coupling_iterations", "relative_residual", "drag",
-                                        "lift"};
+    // Transient: one line per time step; steady: one per coupling iteration (its convergence).
+    std::vector<std::string> columns =
+      steady
+        ? std::vector<std::string>{"coupling_iteration",
+                                   "relative_residual",
+                                   "fluid_pseudo_steps",
+                                   "solid_outer_iterations",
+                                   "drag",
+                                   "lift"}
+        : std::vector<std::string>{"t", "coupling_iterations", "relative_residual", "drag", "lift"};
     for (unsigned int i = 0; i < probes.size(); ++i)
       for (const auto& c : vector_columns<dim>("u", "_" + probes.name(i)))
         columns.push_back(c);
-    history = std::make_unique<HistoryFile>(output_directory + "/fsi_history.txt", columns, comm);
+    history = std::make_unique<HistoryFile>(
+      output_directory + (steady ? "/fsi_steady_history.txt" : "/fsi_history.txt"), columns, comm);
   }
 
   template <int dim>
@@ -187,12 +201,25 @@ namespace fvfsi
     }
     fluid->begin_time_step();
     solid->begin_time_step();
-    acceleration->new_time_step();
     vertices_old = fluid_fv->vertices();
     d = d_old;
     if (clock.step() > 2)
       d.sadd(2, -1, d_older); // 2 d^n - d^(n-1)
 
+    const unsigned int k = converge_interface(); // 2
+    // 3: accept the step.
+    fluid->end_time_step();
+    solid->end_time_step();
+    d_older = d_old;
+    d_old = d;
+    record_time_history(k, acceleration->relative_residual());
+    return k;
+  }
+
+  template <int dim>
+  unsigned int FsiScene<dim>::converge_interface()
+  {
+    acceleration->new_time_step();
     double residual = 0;
     for (unsigned int k = 1; k <= prm.coupling.max_iterations; ++k)
     {
@@ -206,7 +233,7 @@ namespace fvfsi
       catch (const std::exception& e)
       {
         throw std::runtime_error(
-          "FSI: at " + clock.step_name() + ", coupling iteration " + std::to_string(k) +
+          "FSI: at " + step_name() + ", coupling iteration " + std::to_string(k) +
           (k > 1
              ? " (relative interface residual before it: " + Utilities::to_string(residual) + ")"
              : std::string()) +
@@ -217,26 +244,68 @@ namespace fvfsi
       }
       residual = acceleration->relative_residual();
       if (!std::isfinite(residual))
-        throw std::runtime_error("FSI: the interface residual is not finite at " +
-                                 clock.step_name() + ", coupling iteration " + std::to_string(k));
+        throw std::runtime_error("FSI: the interface residual is not finite at " + step_name() +
+                                 ", coupling iteration " + std::to_string(k));
+      if (steady)
+        record_steady_iteration(k, residual);
       if (residual <= prm.coupling.tolerance)
-      {
-        // 3: accept the step.
-        fluid->end_time_step();
-        solid->end_time_step();
-        d_older = d_old;
-        d_old = d;
-        record_time_history(k, residual);
-        return k;
-      }
+        return k; // d is the accepted displacement: both solvers' states belong to it
       d = next;
     }
     throw std::runtime_error(
-      "FSI: the coupling iterations did not converge at " + clock.step_name() +
+      "FSI: the coupling iterations did not converge at " + step_name() +
       ": relative interface residual " + Utilities::to_string(residual) + " after " +
       std::to_string(prm.coupling.max_iterations) +
       " iterations (Coupling/Method = IQN-ILS converges where relaxation does not; or raise "
       "Coupling/Max iterations)");
+  }
+
+  template <int dim>
+  std::string FsiScene<dim>::step_name() const
+  {
+    return steady ? std::string("the steady coupled solve") : clock.step_name();
+  }
+
+  template <int dim>
+  unsigned int FsiScene<dim>::solve_steady()
+  {
+    // Algorithm 1 without time: one "step" whose coupling iterations converge the steady coupled
+    // state. Each iteration moves the mesh, converges the steady fluid on it (pseudo time steps,
+    // warm-started from the last iteration's flow) and the static solid under its tractions
+    // (warm-started from the last displacement); no predictor, d starts from the reference.
+    fluid->begin_time_step();
+    solid->begin_time_step();
+    vertices_old = fluid_fv->vertices();
+    const unsigned int k = converge_interface();
+    fluid->end_time_step();
+    solid->end_time_step();
+    return k;
+  }
+
+  template <int dim>
+  void FsiScene<dim>::record_steady_iteration(const unsigned int k, const double residual)
+  {
+    const Tensor<1, dim> force = fluid_force();
+    std::vector<double> line = {
+      double(k), residual, double(fluid->pseudo_steps()), double(result.solid_outer_iterations),
+      force[0],  force[1]};
+    for (unsigned int i = 0; i < probes.size(); ++i)
+      append(line, solid_probe(i));
+    history->write_line(line);
+    last_force = force;
+    pcout << "fvfsi: FSI steady coupling iteration " << k << ": relative interface residual "
+          << residual << " (tolerance " << prm.coupling.tolerance << "), fluid pseudo steps "
+          << fluid->pseudo_steps() << ", solid outer iterations " << result.solid_outer_iterations
+          << "\n";
+  }
+
+  template <int dim>
+  Tensor<1, dim> FsiScene<dim>::fluid_force() const
+  {
+    Tensor<1, dim> force;
+    for (const auto& patch : fluid_scene_parameters.force_patches)
+      force += fluid->patch_force(fluid_mesh_parameters.patch_id(patch));
+    return force;
   }
 
   template <int dim>
@@ -248,12 +317,8 @@ namespace fvfsi
   template <int dim>
   void FsiScene<dim>::record_time_history(const unsigned int iterations, const double residual)
   {
-    Tensor<1, dim> force;
-    for (const auto& patch : fluid_scene_parameters.force_patches)
-      force += fluid->patch_force(fluid_mesh_parameters.patch_id(patch));
-    history_t.push_back(clock.time());
-    history_drag.push_back(force[0]);
-    history_lift.push_back(force[1]);
+    const Tensor<1, dim> force = fluid_force();
+    last_force = force;
     std::vector<double> line = {clock.time(), double(iterations), residual, force[0], force[1]};
     for (unsigned int i = 0; i < probes.size(); ++i)
     {
@@ -285,6 +350,16 @@ namespace fvfsi
           << fluid_zone->n_faces() << " fluid / " << solid_zone->n_faces()
           << " solid faces, coupling "
           << selection_name(CouplingParameters::method_names, prm.coupling.method) << "\n";
+    if (steady)
+    {
+      result.total_coupling_iterations = result.max_coupling_iterations = solve_steady();
+      pcout << "fvfsi: FSI steady state after " << result.total_coupling_iterations
+            << " coupling iterations, " << fluid->pseudo_steps() << " fluid pseudo steps, "
+            << result.solid_outer_iterations << " solid outer iterations\n";
+      output_results();
+      timer.print_summary();
+      return;
+    }
     const unsigned int total = clock.n_steps();
     const Progress progress;
     for (unsigned int step = 1; step <= total; ++step)
@@ -337,11 +412,13 @@ namespace fvfsi
     summary.set_result("max_coupling_iterations_per_step", result.max_coupling_iterations);
     summary.set_result("min_cell_volume_ratio", result.min_volume_ratio);
     summary.set_result("solid_outer_iterations", result.solid_outer_iterations);
-    if (!fluid_scene_parameters.force_patches.empty() && !history_drag.empty())
+    if (!fluid_scene_parameters.force_patches.empty() && last_force)
     {
-      summary.set_result("drag", history_drag.back());
-      summary.set_result("lift", history_lift.back());
+      summary.set_result("drag", (*last_force)[0]);
+      summary.set_result("lift", (*last_force)[1]);
     }
+    if (steady)
+      summary.set_result("fluid_pseudo_steps", fluid->pseudo_steps());
     for (unsigned int i = 0; i < probes.size(); ++i)
     {
       const Tensor<1, dim> u = solid_probe(i);

@@ -115,13 +115,15 @@ namespace fvfsi
 
     /// The driver has moved the mesh for the coming time step (FVGeometry::reinit) and passes
     /// the volumes the faces swept, FVGeometry::swept_volumes() of that motion [m^dim]. The next
-    /// solve builds the mesh fluxes from them. Transient runs only; a step without a call is a
-    /// step without motion.
+    /// solve builds the mesh fluxes from them; a step without a call is a step without motion.
+    /// Steady: the mesh is at rest in its new position (no mesh flux).
     void move_mesh(const std::vector<double>& swept_volume);
 
     /// Steady: pseudo time steps until the relative change is below the steady tolerance.
     /// Returns the number of pseudo steps.
     unsigned int solve_steady();
+    /// Steady: pseudo time steps of all solves so far.
+    unsigned int pseudo_steps() const { return pseudo_step; }
 
     const FluidParameters& parameters() const { return prm; }
 
