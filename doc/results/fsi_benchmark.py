@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Statistics, plots and JSON records of the Turek-Hron FSI2/FSI3 runs (doc/results/fsi3.sh,
 fsi2.sh).
 

@@ -380,15 +380,24 @@ namespace fvfsi
   template <int dim>
   void FluidSolver<dim>::end_time_step()
   {
-    // Relative change over the step.
-    double max_du = 0, max_u = 0;
+    // Relative change over the step, max|du| / U. The velocity scale U is max|u|; steady, at
+    // least the speed the pressure differences drive, sqrt(max p - min p) (p kinematic,
+    // Bernoulli): a fluid at rest under gravity has no speed but a pressure range, and its
+    // change relative to max|u| would be round-off over round-off.
+    double max_du = 0, max_u = 0, max_p = -1e300, min_p = 1e300;
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
     {
       max_du = std::max(max_du, (u[c] - u_old[c]).norm());
       max_u = std::max(max_u, u[c].norm());
+      max_p = std::max(max_p, p.local_element(c));
+      min_p = std::min(min_p, p.local_element(c));
     }
     max_du = Utilities::MPI::max(max_du, geometry.comm());
     max_u = Utilities::MPI::max(max_u, geometry.comm());
+    if (!prm.transient)
+      max_u = std::max(max_u, std::sqrt(std::max(Utilities::MPI::max(max_p, geometry.comm()) -
+                                                   Utilities::MPI::min(min_p, geometry.comm()),
+                                                 0.0)));
     shift_time_levels();
     last_change = max_du / std::max(max_u, 1e-300);
   }
