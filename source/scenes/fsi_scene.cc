@@ -189,7 +189,7 @@ namespace fvfsi
       {
         const InterfaceVector d_tilde = coupling_iteration(d); // 2a-2e
         TimerOutput::Scope scope(timer, "acceleration");
-        next = acceleration->next(d, d_tilde); // 2f: Eqs 30-31 or IQN-ILS
+        next = acceleration->next(d, d_tilde); // 2f: Eqs 30-31, Aitken or IQN
       }
       catch (const std::exception& e)
       {
@@ -207,7 +207,7 @@ namespace fvfsi
       if (!std::isfinite(residual))
         throw std::runtime_error("FSI: the interface residual is not finite at " +
                                  clock.step_name() + ", coupling iteration " + std::to_string(k));
-      if (residual <= prm.coupling.tolerance)
+      if (acceleration->converged()) // Tolerance (Eq. 30) or Residual reduction
       {
         // 3: accept the step.
         fluid->end_time_step();
