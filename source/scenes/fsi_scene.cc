@@ -228,7 +228,7 @@ namespace fvfsi
       {
         const InterfaceVector d_tilde = coupling_iteration(d); // 2a-2e
         TimerOutput::Scope scope(timer, "acceleration");
-        next = acceleration->next(d, d_tilde); // 2f: Eqs 30-31 or IQN-ILS
+        next = acceleration->next(d, d_tilde); // 2f: Eqs 30-31, Aitken or IQN
       }
       catch (const std::exception& e)
       {
@@ -248,7 +248,7 @@ namespace fvfsi
                                  ", coupling iteration " + std::to_string(k));
       if (steady)
         record_steady_iteration(k, residual);
-      if (residual <= prm.coupling.tolerance)
+      if (acceleration->converged()) // Tolerance (Eq. 30) or Residual reduction
         return k; // d is the accepted displacement: both solvers' states belong to it
       d = next;
     }

@@ -7,8 +7,8 @@
 //   2. iterate: move the fluid mesh (Laplace mesh motion with the interface vertices at d), solve
 //      the fluid, transfer its wall tractions to the solid faces (Eqs 32-33), solve the solid,
 //      transfer its vertex displacements to the fluid interface vertices (3.5.2), and update d
-//      from the residual r = d~ - d (Eq. 30) by fixed relaxation, Aitken or IQN-ILS, until
-//      |r| <= tolerance |d~|;
+//      from the residual r = d~ - d (Eq. 30) by fixed relaxation, Aitken, IQN-ILS or IQN-IMVJ,
+//      until |r| <= tolerance |d~| (or, optionally, |r| <= reduction x the step's largest |r|);
 //   3. both solvers accept the step.
 // Steady (Fluid/Transient = Solid/Transient = false): step 2 alone converges the steady coupled
 // state, each iteration solving the steady fluid and the static solid (solve_steady()).
