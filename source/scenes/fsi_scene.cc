@@ -240,7 +240,11 @@ namespace fvfsi
           ": " + e.what() +
           (k > 2 ? "\n(a coupling iteration that diverges ends like this: use Coupling/Method = "
                    "IQN-ILS or Aitken, or a smaller Coupling/Relaxation)"
-                 : std::string()));
+                 : std::string()) +
+          (!steady && result.n_coupled_steps == 0
+             ? "\n(the first coupled time step: if the flow starts impulsively, let it develop "
+               "on the fixed mesh first, Coupling/Start time)"
+             : std::string()));
       }
       residual = acceleration->relative_residual();
       if (!std::isfinite(residual))
