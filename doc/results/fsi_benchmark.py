@@ -13,6 +13,7 @@ refined Featflow references and the paper's Table 2.
   fsi_benchmark.py table CASE run1.json run2.json ...                      markdown table rows
   fsi_benchmark.py plot CASE PNG RUN_DIRECTORY T0 T1                       u_x, u_y, drag, lift
   fsi_benchmark.py store CASE shipped.json run.json ...   doc/results/fsi_benchmarks.json[CASE]
+  fsi_benchmark.py methods CASE run.json ...        coupling methods: table, fsi_benchmarks.json
   fsi_benchmark.py cavity-record H RUN_DIRECTORY "SET..." > run.json   one cavity mesh
   fsi_benchmark.py cavity-study PNG run_h1.json ... (coarsest first)   orders, table, JSON, plot
 
@@ -90,9 +91,13 @@ def record(case, directory, t0, t1, prm, overrides):
            "dt": float(h["t"][1] - h["t"][0]), "end_time": float(h["t"][-1]), "window": [t0, t1],
            "wall_seconds": s["wall_seconds"], "time_steps": r["time_steps"],
            "coupling_iterations_mean": float(h["coupling_iterations"][coupled].mean()),
-           "coupling_iterations_max": int(h["coupling_iterations"].max())}
+           "coupling_iterations_max": int(h["coupling_iterations"].max()),
+           "min_cell_volume_ratio": r["min_cell_volume_ratio"]}
     if "timing" in s:
         run["timing"] = s["timing"]
+    # Wall time per coupled step (the steps from Coupling/Start time on).
+    run["coupled_wall_seconds"] = r["coupled_wall_seconds"]
+    run["wall_per_coupled_step"] = r["coupled_wall_seconds"] / max(int(coupled.sum()), 1)
     for q in QUANTITIES:
         st = statistics(h["t"], h[q], t0, t1)
         ref = REFERENCE[case][q]
@@ -110,8 +115,8 @@ def table(case, runs):
     """Markdown rows: per run the four quantities as mean ± amplitude [frequency] with the errors
     of amplitude and frequency against the refined references, the cost and the iterations."""
     lines = ["| run | cells fluid + solid | dt [s] | " + " | ".join(QUANTITIES) +
-             " | wall [s] | coupling it. mean / max |",
-             "|---|---|---|" + "---|" * len(QUANTITIES) + "---|---|"]
+             " | wall [s] | coupling it. mean / max | min V/V_ref |",
+             "|---|---|---|" + "---|" * len(QUANTITIES) + "---|---|---|"]
     for name, run in runs:
         cells = []
         for q in QUANTITIES:
@@ -124,14 +129,38 @@ def table(case, runs):
                          f" (A {percent(st['error_amplitude'])}, f {percent(st['error_frequency'])})")
         lines.append(f"| {name} | {run['fluid_cells']} + {run['solid_cells']} | {run['dt']:.3g} | " +
                      " | ".join(cells) + f" | {run['wall_seconds']:.0f} | "
-                     f"{run['coupling_iterations_mean']:.2f} / {run['coupling_iterations_max']} |")
+                     f"{run['coupling_iterations_mean']:.2f} / {run['coupling_iterations_max']} | "
+                     f"{run['min_cell_volume_ratio']:.3f} |")
     ref = REFERENCE[case]
     paper = PAPER[case]
     for label, values in (("refined reference", ref), ("paper Table 2", paper)):
         cells = [f"{(1e3 if q.startswith('u') else 1) * values[q][0]:.4g} ± "
                  f"{(1e3 if q.startswith('u') else 1) * values[q][1]:.4g} [{values[q][2]}]"
                  for q in QUANTITIES]
-        lines.append(f"| {label} | | | " + " | ".join(cells) + " | | |")
+        lines.append(f"| {label} | | | " + " | ".join(cells) + " | | | |")
+    return "\n".join(lines)
+
+
+def methods(case, paths):
+    """The coupling-method comparison: iterations per coupled step, wall time, u(A) at the end."""
+    lines = ["| method | reuse | criterion | coupling it. mean / max | wall [s] | "
+             "wall per coupled step [s] | u_y(A) at the end [m] |",
+             "|---|---|---|---|---|---|---|"]
+    runs = []
+    for path in paths:
+        with open(path) as f:
+            run = json.load(f)
+        runs.append(run)
+        settings = dict(s.split("=", 1) for s in run["set"])
+        criterion = ("paper: reduced 1e6 from the step's largest |r|"
+                     if "Coupling/Residual reduction" in settings else "|r| <= 1e-5 |d~| (shipped)")
+        h = load(path.replace(".json", ""))
+        coupled = int((h["coupling_iterations"] > 0).sum())
+        lines.append(f"| {settings.get('Coupling/Method')} | {settings.get('Coupling/Reuse time steps')} "
+                     f"| {criterion} | {run['coupling_iterations_mean']:.2f} / "
+                     f"{run['coupling_iterations_max']} | {run['wall_seconds']:.0f} | "
+                     f"{run['wall_per_coupled_step']:.3f} | {h['uy_A'][-1]:.5e} |")
+    store(case, {"methods": runs})
     return "\n".join(lines)
 
 
@@ -144,13 +173,13 @@ JSON = "doc/results/fsi_benchmarks.json"
 
 
 def store(key, value):
-    """doc/results/fsi_benchmarks.json[key] = value (the other cases kept)."""
+    """doc/results/fsi_benchmarks.json[key] updated with the entries of value (the rest kept)."""
     try:
         with open(JSON) as f:
             data = json.load(f)
     except FileNotFoundError:
         data = {}
-    data[key] = value
+    data.setdefault(key, {}).update(value)
     with open(JSON, "w") as f:
         json.dump(data, f, indent=1)
         f.write("\n")
@@ -211,15 +240,20 @@ def plot(case, png, directory, t0, t1):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     h = load(directory)
-    fig, axes = plt.subplots(4, 1, figsize=(9, 10), sharex=True)
+    fig, axes = plt.subplots(5, 1, figsize=(9, 12), sharex=True)
     labels = {"ux_A": "u_x(A) [m]", "uy_A": "u_y(A) [m]", "drag": "drag [N/m]", "lift": "lift [N/m]"}
-    for ax, q in zip(axes, QUANTITIES):
+    late = h["t"] >= 0.1 * h["t"][-1]  # the y range without the flow's start at t = 0
+    for ax, q in zip(axes[:4], QUANTITIES):
         ax.plot(h["t"], h[q], lw=0.6, label="fvfsi")
         mean, amplitude, _ = REFERENCE[case][q]
+        low, high = min(h[q][late].min(), mean - amplitude), max(h[q][late].max(), mean + amplitude)
+        ax.set_ylim(low - 0.05 * (high - low), high + 0.05 * (high - low))
         for level, style in ((mean, "-"), (mean - amplitude, "--"), (mean + amplitude, "--")):
             ax.axhline(level, color="k", lw=0.6, ls=style)
         ax.axvspan(t0, t1, color="0.9", zorder=0)
         ax.set_ylabel(labels[q])
+    axes[4].plot(h["t"], h["min_volume_ratio"], lw=0.6)
+    axes[4].set_ylabel("min V / V_ref")
     axes[0].set_title(f"{case.upper()}: {directory.rstrip('/').split('/')[-1]} (black: reference "
                       "mean and mean ± amplitude; grey: statistics window)", fontsize=9)
     axes[-1].set_xlabel("t [s]")
@@ -245,6 +279,8 @@ if __name__ == "__main__":
             with open(path) as f:
                 runs.append(json.load(f))
         store(case, {"shipped": runs[0], "runs": runs})
+    elif command == "methods":
+        print(methods(case, sys.argv[3:]))
     elif command == "cavity-record":
         json.dump(cavity_record(float(sys.argv[2]), sys.argv[3], sys.argv[4:]), sys.stdout, indent=1)
     elif command == "cavity-study":

@@ -107,6 +107,7 @@ namespace fvfsi
     for (unsigned int i = 0; i < probes.size(); ++i)
       for (const auto& c : vector_columns<dim>("u", "_" + probes.name(i)))
         columns.push_back(c);
+    columns.push_back("min_volume_ratio"); // min over the fluid cells of V_P / V_P(reference)
     history = std::make_unique<HistoryFile>(
       output_directory + (steady ? "/fsi_steady_history.txt" : "/fsi_history.txt"), columns, comm);
   }
@@ -141,8 +142,8 @@ namespace fvfsi
       if (!cell->is_artificial())
         for (const unsigned int v : cell->vertex_indices())
           cell->vertex(v) = x[cell->vertex_index(v)];
-    result.min_volume_ratio = std::min(
-      result.min_volume_ratio, min_volume_ratio(*fluid_fv, *fluid_reference_fv, clock.time()));
+    volume_ratio = min_volume_ratio(*fluid_fv, *fluid_reference_fv, clock.time());
+    result.min_volume_ratio = std::min(result.min_volume_ratio, volume_ratio);
     fluid->move_mesh(swept);
   }
 
@@ -295,6 +296,7 @@ namespace fvfsi
       force[0],  force[1]};
     for (unsigned int i = 0; i < probes.size(); ++i)
       append(line, solid_probe(i));
+    line.push_back(volume_ratio);
     history->write_line(line);
     last_force = force;
     pcout << "fvfsi: FSI steady coupling iteration " << k << ": relative interface residual "
@@ -329,6 +331,7 @@ namespace fvfsi
       const Tensor<1, dim> u = solid_probe(i);
       append(line, u);
     }
+    line.push_back(volume_ratio);
     history->write_line(line);
   }
 
@@ -369,6 +372,7 @@ namespace fvfsi
     for (unsigned int step = 1; step <= total; ++step)
     {
       unsigned int iterations = 0;
+      Timer step_timer;
       try
       {
         iterations = solve_time_step();
@@ -381,6 +385,8 @@ namespace fvfsi
         throw;
       }
       result.n_time_steps = step;
+      if (iterations > 0)
+        result.coupled_wall_seconds += step_timer.wall_time();
       result.n_coupled_steps += iterations > 0;
       result.total_coupling_iterations += iterations;
       result.max_coupling_iterations = std::max(result.max_coupling_iterations, iterations);
@@ -416,6 +422,7 @@ namespace fvfsi
     summary.set_result("max_coupling_iterations_per_step", result.max_coupling_iterations);
     summary.set_result("min_cell_volume_ratio", result.min_volume_ratio);
     summary.set_result("solid_outer_iterations", result.solid_outer_iterations);
+    summary.set_result("coupled_wall_seconds", result.coupled_wall_seconds);
     if (!fluid_scene_parameters.force_patches.empty() && last_force)
     {
       summary.set_result("drag", (*last_force)[0]);

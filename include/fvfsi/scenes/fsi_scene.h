@@ -63,7 +63,8 @@ namespace fvfsi
     {
       return n_coupled_steps == 0 ? 0 : double(total_coupling_iterations) / n_coupled_steps;
     }
-    double min_volume_ratio = 1; ///< min over cells and steps of V_P / V_P(reference), fluid
+    double min_volume_ratio = 1;     ///< min over cells and steps of V_P / V_P(reference), fluid
+    double coupled_wall_seconds = 0; ///< wall time of the coupled time steps [s]
   };
 
   /// The parameters an FSI scene reads.
@@ -157,6 +158,7 @@ namespace fvfsi
     /// Interface displacement at the fluid interface vertices at t^(n+1), t^n, t^(n-1) [m].
     InterfaceVector d, d_old, d_older;
     std::optional<dealii::Tensor<1, dim>> last_force; ///< fluid_force() of the last record
+    double volume_ratio = 1; ///< min over the fluid cells of V_P / V_P(reference), now
     FsiResults result;
   };
 } // namespace fvfsi
