@@ -1,25 +1,26 @@
 // A short, coarse Turek-Hron FSI3 (prm/turek_hron_fsi3.prm on a 1921-cell channel, n = 12, and a
-// 20 x 2 flag, dt = 2 ms, 10 time steps), in the paper's set-up: full inflow from the first step,
+// 20 x 2 flag, dt = 2 ms, 20 time steps), in the paper's set-up: full inflow from the first step,
 // the fluid alone on the fixed mesh until Coupling/Start time = 0.01 s, then IQN-ILS.
 // Asserted:
 //   (a) the coupling start time: steps 1-5 are the fluid alone (0 coupling iterations in
-//       fsi_history.txt, u(A) exactly 0, a drag), steps 6-10 are coupled (iterations, u(A) != 0);
+//       fsi_history.txt, u(A) exactly 0, a drag), steps 6-20 are coupled (iterations, u(A) != 0);
 //       the same run with Coupling/Start time = 0 (an impulsive start: the fluid at rest meets
 //       the full inflow, a pressure of the order rho U L / dt ~ 5e5 Pa on a flag with E = 5.6e6 Pa)
 //       stops at time step 1 with an error that names the step and points to Coupling/Start time;
-//   (b) recorded values at t = 0.02 s: drag and u_x(A) with 6 significant digits, lift and u_y(A)
-//       (the small components, 1.7e-6 of their own value apart between np = 1 and 2) with 4, and
-//       the coupling iterations (numdiff's default -r 1e-8 then checks them to the printed
-//       digits: the run is deterministic, and the digits leave room for other partitions,
-//       compilers and BLAS);
-//   (c) np ranks equal one rank (the run repeated on rank 0 alone, MPI_COMM_SELF): the force
-//       (drag, lift) and u(A) of every time step, as vectors, within 1e-8 of the largest |force|
-//       and |u(A)|, and the same coupling iterations per step. Every linear solve is converged
-//       to 1e-10, the solid outer iterations to 1e-11 and the coupling to 1e-8 (at the shipped
-//       1e-5 the two runs stop at different points of the same convergence, 1e-7 apart), so what
-//       is left is the partition dependence of the preconditioners, amplified by the coupling:
-//       measured with np = 2, force 1.2e-11, u(A) 2.7e-9 (the lift alone, against its own
-//       largest value, 5e-8: it is the small component of a force of 527 N/m).
+//   (b) recorded values at t = 0.04 s of the run of (c) (deterministic to 1e-9): drag, lift,
+//       u(A) with 6 (u_y(A): 5) significant digits, which numdiff's default -r 1e-8 then checks
+//       to the printed digits; and the total coupling iterations of the run with the shipped
+//       solver settings within 10% of the recorded 88 (where a step's residual crosses the
+//       tolerance 1e-5 depends on the partition at the level of the solver tolerances: np = 2
+//       measured 83);
+//   (c) np ranks equal one rank: the run again with every linear solve converged to 1e-10, the
+//       solid outer iterations to 1e-13 and the coupling to 1e-9 (at the shipped settings the
+//       two stop at different points of the same convergence, 1e-7 apart), on all ranks and on
+//       rank 0 alone (MPI_COMM_SELF): the force (drag, lift) and u(A) of every time step, as
+//       vectors, within 1e-8 of the largest |force| and |u(A)|. What is left is the partition
+//       dependence of the preconditioners, amplified by the coupling: measured with np = 2,
+//       force 1e-10, u(A) 4e-10. (The coupling iterations of a step may differ by one or two:
+//       at 1e-9 the residual reaches the tolerance at the level of that noise.)
 // With np = 1 (c) compares two identical runs. Verdicts and 6-digit values only, so that
 // NAME.output and NAME.mpirun=2.output are the same file.
 #include <fvfsi/scenes/fsi_scene.h>
@@ -34,20 +35,20 @@
 
 using namespace fvfsi_test;
 
-const std::vector<std::string> coarse = {"Mesh/Generator arguments=12",
-                                         "Solid mesh/Generator arguments=20: 2",
-                                         "Time/Time step=0.002",
-                                         "Time/End time=0.02",
-                                         "Coupling/Start time=0.01",
-                                         "Fluid scene/Output interval=0",
-                                         "Fluid scene/Progress interval=5",
-                                         "Fluid momentum solver/Residual reduction=1e-10",
-                                         "Fluid pressure solver/Residual reduction=1e-10",
-                                         "Fluid pressure solver/Corrector residual reduction=0",
-                                         "Mesh motion solver/Residual reduction=1e-10",
-                                         "Solid linear solver/Residual reduction=1e-10",
-                                         "Solid/Outer tolerance=1e-11",
-                                         "Coupling/Tolerance=1e-8"};
+const std::vector<std::string> coarse = {
+  "Mesh/Generator arguments=12",    "Solid mesh/Generator arguments=20: 2",
+  "Time/Time step=0.002",           "Time/End time=0.04",
+  "Coupling/Start time=0.01",       "Fluid scene/Output interval=0",
+  "Fluid scene/Progress interval=5"};
+
+/// For (c): every solve converged far below 1e-8.
+const std::vector<std::string> tight = {"Fluid momentum solver/Residual reduction=1e-10",
+                                        "Fluid pressure solver/Residual reduction=1e-10",
+                                        "Fluid pressure solver/Corrector residual reduction=0",
+                                        "Mesh motion solver/Residual reduction=1e-10",
+                                        "Solid linear solver/Residual reduction=1e-10",
+                                        "Solid/Outer tolerance=1e-13",
+                                        "Coupling/Tolerance=1e-9"};
 
 /// The columns t, coupling_iterations, residual, drag, lift, ux_A, uy_A of fsi_history.txt.
 std::vector<std::vector<double>> read_history(const std::string& directory)
@@ -96,16 +97,17 @@ int main(int argc, char** argv)
   const MPI_Comm comm = MPI_COMM_WORLD;
   const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
 
-  const std::string error = run({}, comm, "out_np");
+  const std::string error = run({}, comm, "out_shipped");
   const std::string impulsive =
     run({"Coupling/Start time=0", "Time/End time=0.004"}, comm, "out_impulsive");
+  run(tight, comm, "out_np");
   if (root)
-    run({}, MPI_COMM_SELF, "out_1");
+    run(tight, MPI_COMM_SELF, "out_1");
   if (!root)
     return 0;
   std::printf("impulsive start: %s\n", impulsive.c_str());
-  const auto h = read_history("out_np"), h1 = read_history("out_1");
-  out << "run through: " << yes_no(error.empty() && h.size() == 10) << "\n";
+  const auto h = read_history("out_shipped");
+  out << "run through: " << yes_no(error.empty() && h.size() == 20) << "\n";
 
   // (a)
   bool alone = true, coupled = true;
@@ -115,34 +117,40 @@ int main(int argc, char** argv)
     else
       coupled = coupled && h[i][1] >= 1 && h[i][5] != 0 && h[i][6] != 0;
   out << "steps 1-5 fluid alone (0 coupling iterations, u(A) = 0, a drag): " << yes_no(alone)
-      << "\nsteps 6-10 coupled (coupling iterations, u(A) != 0): " << yes_no(coupled) << "\n";
+      << "\nsteps 6-20 coupled (coupling iterations, u(A) != 0): " << yes_no(coupled) << "\n";
   out << "impulsive start: stops at time step 1 naming it and Coupling/Start time: "
       << yes_no(impulsive.find("time step 1 ") != std::string::npos &&
                 impulsive.find("Coupling/Start time") != std::string::npos)
       << "\n";
 
-  // (b)
+  // (b) the values of the tight run (deterministic to 1e-9), the iterations of the shipped one.
+  const auto hn = read_history("out_np"), h1 = read_history("out_1");
   unsigned int iterations = 0;
   for (const auto& row : h)
     iterations += static_cast<unsigned int>(row[1]);
-  const auto& last = h.back();
-  out << format("t = %.3f s: drag %.6g N/m, lift %.4g N/m, u_x(A) %.6g m, u_y(A) %.4g m, "
-                "coupling iterations %u",
-                last[0], last[3], last[4], last[5], last[6], iterations)
-      << "\n";
+  std::printf("shipped settings: %u coupling iterations\n", iterations);
+  if (!hn.empty())
+  {
+    const auto& last = hn.back();
+    out << format("t = %.3f s: drag %.6g N/m, lift %.6g N/m, u_x(A) %.6g m, u_y(A) %.5g m", last[0],
+                  last[3], last[4], last[5], last[6])
+        << "\n";
+  }
+  out << "shipped settings: total coupling iterations within 10% of 88 (recorded): "
+      << yes_no(std::abs(double(iterations) - 88) <= 8.8) << "\n";
 
   // (c) the force (drag, lift) and u(A) as vectors, each against its largest magnitude.
-  bool equal = h.size() == h1.size();
+  bool equal = hn.size() == 20 && h1.size() == 20;
   const auto difference = [&](const std::vector<unsigned int>& columns)
   {
     double scale = 0, difference = 0;
-    for (unsigned int i = 0; equal && i < h.size(); ++i)
+    for (unsigned int i = 0; equal && i < hn.size(); ++i)
     {
       double norm = 0, d = 0;
       for (const unsigned int c : columns)
       {
         norm += h1[i][c] * h1[i][c];
-        d += (h[i][c] - h1[i][c]) * (h[i][c] - h1[i][c]);
+        d += (hn[i][c] - h1[i][c]) * (hn[i][c] - h1[i][c]);
       }
       scale = std::max(scale, std::sqrt(norm));
       difference = std::max(difference, std::sqrt(d));
@@ -152,11 +160,10 @@ int main(int argc, char** argv)
   const double force = difference({3, 4}), u_A = difference({5, 6});
   std::printf("np - 1 rank, max relative differences: force %.2e, u(A) %.2e\n", force, u_A);
   unsigned int iteration_difference = 0;
-  for (unsigned int i = 0; equal && i < h.size(); ++i)
+  for (unsigned int i = 0; equal && i < hn.size(); ++i)
     iteration_difference =
-      std::max<unsigned int>(iteration_difference, std::abs(int(h[i][1]) - int(h1[i][1])));
+      std::max<unsigned int>(iteration_difference, std::abs(int(hn[i][1]) - int(h1[i][1])));
   std::printf("coupling iterations per step differ by at most %u\n", iteration_difference);
-  equal = equal && iteration_difference == 0 && std::max(force, u_A) <= 1e-8;
-  out << "np ranks equal one rank (force and u(A) every step to 1e-8, coupling iterations): "
-      << yes_no(equal) << "\n";
+  equal = equal && std::max(force, u_A) <= 1e-8;
+  out << "np ranks equal one rank (force and u(A) every step to 1e-8): " << yes_no(equal) << "\n";
 }
