@@ -3,11 +3,12 @@
 fsi2.sh).
 
 For a run's fsi_history.txt and a window [T0, T1] (the last seconds, the solution periodic):
-mean = (max + min) / 2 and amplitude = (max - min) / 2 over the last full period of the window,
-frequency = 1 / period from the up-crossings of the mean in the window (Turek and Hron's
-definitions, ../shared/reference/benchmarks.md section 2), for u_x(A), u_y(A), drag and lift; the
-amplitude of every period in the window (it has settled when they agree); the errors against the
-refined Featflow references and the paper's Table 2.
+mean = (max + min) / 2 and amplitude = (max - min) / 2 over the last full period of the flag's
+oscillation (of u_y(A)) in the window, frequency = 1 / period from the up-crossings of each
+quantity's mid level in the window (Turek and Hron's definitions, ../shared/reference/benchmarks.md
+section 2), for u_x(A), u_y(A), drag and lift; the amplitude of every period in the window (it has
+settled when they agree); the errors against the refined Featflow references and the paper's
+Table 2.
 
   fsi_benchmark.py record CASE RUN_DIRECTORY T0 T1 PRM "SET..." > run.json   one RUN record
   fsi_benchmark.py table CASE run1.json run2.json ...                      markdown table rows
@@ -57,21 +58,30 @@ def up_crossings(t, q, level):
                      for i in range(1, len(q)) if q[i - 1] < level <= q[i]])
 
 
-def statistics(t, q, t0, t1):
-    """Mean, amplitude (last full period), frequency and the amplitude of each period in [t0, t1]."""
+def fundamental_periods(t, q, t0, t1):
+    """The full periods of Q (u_y(A): the flag's fundamental oscillation) in [t0, t1], as
+    (start, end) pairs between up-crossings of its mid level."""
     m = (t >= t0) & (t <= t1)
-    t, q = t[m], q[m]
-    level = (q.max() + q.min()) / 2
-    c = up_crossings(t, q, level)
-    if len(c) < 2:
+    c = up_crossings(t[m], q[m], (q[m].max() + q[m].min()) / 2)
+    return list(zip(c[:-1], c[1:]))
+
+
+def statistics(t, q, t0, t1, periods):
+    """Mean and amplitude over the last full period of the flag's oscillation, and those of
+    every period in [t0, t1] (they agree once the run is periodic); the frequency of Q itself from
+    the up-crossings of its mid level (drag and u_x(A) oscillate at twice the flag's frequency,
+    with alternating peaks: a period of their own would see only one of the two)."""
+    m = (t >= t0) & (t <= t1)
+    c = up_crossings(t[m], q[m], (q[m].max() + q[m].min()) / 2)
+    if len(c) < 2 or not periods:
         return {"mean": None, "amplitude": None, "frequency": None, "period_amplitudes": []}
-    periods = []
-    for a, b in zip(c[:-1], c[1:]):
+    per_period = []
+    for a, b in periods:
         w = (t >= a) & (t <= b)
-        periods.append(((q[w].max() + q[w].min()) / 2, (q[w].max() - q[w].min()) / 2))
-    return {"mean": periods[-1][0], "amplitude": periods[-1][1],
+        per_period.append(((q[w].max() + q[w].min()) / 2, (q[w].max() - q[w].min()) / 2))
+    return {"mean": per_period[-1][0], "amplitude": per_period[-1][1],
             "frequency": (len(c) - 1) / (c[-1] - c[0]),
-            "period_amplitudes": [p[1] for p in periods]}
+            "period_amplitudes": [p[1] for p in per_period]}
 
 
 def error(value, reference):
@@ -98,8 +108,9 @@ def record(case, directory, t0, t1, prm, overrides):
     # Wall time per coupled step (the steps from Coupling/Start time on).
     run["coupled_wall_seconds"] = r["coupled_wall_seconds"]
     run["wall_per_coupled_step"] = r["coupled_wall_seconds"] / max(int(coupled.sum()), 1)
+    periods = fundamental_periods(h["t"], h["uy_A"], t0, t1)
     for q in QUANTITIES:
-        st = statistics(h["t"], h[q], t0, t1)
+        st = statistics(h["t"], h[q], t0, t1, periods)
         ref = REFERENCE[case][q]
         st["error_mean"], st["error_amplitude"], st["error_frequency"] = (
             error(st["mean"], ref[0]), error(st["amplitude"], ref[1]), error(st["frequency"], ref[2]))

@@ -67,7 +67,9 @@ namespace fvfsi
       for (int j = 0; j < n; ++j, ++k)
       {
         const int source = entry_source[k];
-        values[j] = source < 0 ? diagonal[c] : source % 2 == 0 ? upper[source / 2] : lower[source / 2];
+        values[j] = source < 0        ? diagonal[c]
+                    : source % 2 == 0 ? upper[source / 2]
+                                      : lower[source / 2];
       }
     }
   }
