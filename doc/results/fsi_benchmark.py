@@ -23,6 +23,7 @@ the interface, and the observed order of the paper's Eq. 34 from the three fines
 p = ln[(phi_3 - phi_2) / (phi_2 - phi_1)] / ln 2 (phi_1 the finest).
 """
 import json
+import os
 import subprocess
 import sys
 
@@ -66,21 +67,41 @@ def fundamental_periods(t, q, t0, t1):
     return list(zip(c[:-1], c[1:]))
 
 
+def dominant_frequency(t, q, t0, t1):
+    """The frequency of Q in [t0, t1] from its autocorrelation: the first lag at which Q repeats
+    itself (correlation above 1/2), refined by a parabola through the peak. Mean crossings would
+    count the lift's harmonics as periods of their own; this sees drag and u_x(A) at twice the
+    flag's frequency and lift and u_y(A) at the flag's (the reference's convention)."""
+    m = (t >= t0) & (t <= t1)
+    x = q[m] - q[m].mean()
+    n = len(x)
+    r = np.correlate(x, x, "full")[n - 1:] / np.arange(n, 0, -1)  # unbiased
+    r /= r[0]
+    start = np.argmax(r < 0)  # past the zero-lag peak
+    for k in range(max(start, 1), n // 2):
+        if r[k] > 0.5 and r[k - 1] < r[k] >= r[k + 1]:
+            shift = 0.5 * (r[k - 1] - r[k + 1]) / (r[k - 1] - 2 * r[k] + r[k + 1])
+            return 1 / ((k + shift) * (t[1] - t[0]))
+    return None
+
+
 def statistics(t, q, t0, t1, periods):
     """Mean and amplitude over the last full period of the flag's oscillation, and those of
-    every period in [t0, t1] (they agree once the run is periodic); the frequency of Q itself from
-    the up-crossings of its mid level (drag and u_x(A) oscillate at twice the flag's frequency,
-    with alternating peaks: a period of their own would see only one of the two)."""
-    m = (t >= t0) & (t <= t1)
-    c = up_crossings(t[m], q[m], (q[m].max() + q[m].min()) / 2)
-    if len(c) < 2 or not periods:
+    every period in [t0, t1] (they agree once the run is periodic). The frequency: the flag's
+    (from the up-crossings of u_y(A) that bound PERIODS, precise to interpolation) times the
+    whole multiple that Q's own dominant_frequency is of it (2 for drag and u_x(A), 1 for lift
+    and u_y(A)): the autocorrelation of a few periods alone is good to a few tenths of a percent."""
+    if not periods:
         return {"mean": None, "amplitude": None, "frequency": None, "period_amplitudes": []}
+    fundamental = len(periods) / (periods[-1][1] - periods[0][0])
+    own = dominant_frequency(t, q, t0, t1)
+    frequency = None if own is None else fundamental * max(round(own / fundamental), 1)
     per_period = []
     for a, b in periods:
         w = (t >= a) & (t <= b)
         per_period.append(((q[w].max() + q[w].min()) / 2, (q[w].max() - q[w].min()) / 2))
     return {"mean": per_period[-1][0], "amplitude": per_period[-1][1],
-            "frequency": (len(c) - 1) / (c[-1] - c[0]),
+            "frequency": frequency,
             "period_amplitudes": [p[1] for p in per_period]}
 
 
@@ -96,7 +117,7 @@ def record(case, directory, t0, t1, prm, overrides):
     r = s["results"]
     coupled = h["coupling_iterations"] > 0
     run = {"prm": prm, "set": overrides,
-           "commit": git_commit(),
+           "commit": git_commit(directory),
            "ranks": s["n_mpi_ranks"], "fluid_cells": r["fluid_cells"], "solid_cells": r["solid_cells"],
            "dt": float(h["t"][1] - h["t"][0]), "end_time": float(h["t"][-1]), "window": [t0, t1],
            "wall_seconds": s["wall_seconds"], "time_steps": r["time_steps"],
@@ -106,8 +127,10 @@ def record(case, directory, t0, t1, prm, overrides):
     if "timing" in s:
         run["timing"] = s["timing"]
     # Wall time per coupled step (the steps from Coupling/Start time on).
-    run["coupled_wall_seconds"] = r["coupled_wall_seconds"]
-    run["wall_per_coupled_step"] = r["coupled_wall_seconds"] / max(int(coupled.sum()), 1)
+    # (runs made before commit f552d36 do not have it)
+    if "coupled_wall_seconds" in r:
+        run["coupled_wall_seconds"] = r["coupled_wall_seconds"]
+        run["wall_per_coupled_step"] = r["coupled_wall_seconds"] / max(int(coupled.sum()), 1)
     periods = fundamental_periods(h["t"], h["uy_A"], t0, t1)
     for q in QUANTITIES:
         st = statistics(h["t"], h[q], t0, t1, periods)
@@ -175,7 +198,11 @@ def methods(case, paths):
     return "\n".join(lines)
 
 
-def git_commit():
+def git_commit(directory):
+    """The commit of the binary that made the run (DIRECTORY/commit.txt, written by
+    fsi_runs.sh), else the tree's."""
+    if os.path.exists(directory + "/commit.txt"):
+        return open(directory + "/commit.txt").read().strip()
     return subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
                           text=True).stdout.strip()
 
@@ -263,7 +290,8 @@ def plot(case, png, directory, t0, t1):
             ax.axhline(level, color="k", lw=0.6, ls=style)
         ax.axvspan(t0, t1, color="0.9", zorder=0)
         ax.set_ylabel(labels[q])
-    axes[4].plot(h["t"], h["min_volume_ratio"], lw=0.6)
+    if "min_volume_ratio" in h:  # (a column since commit 3bff9b7)
+        axes[4].plot(h["t"], h["min_volume_ratio"], lw=0.6)
     axes[4].set_ylabel("min V / V_ref")
     axes[0].set_title(f"{case.upper()}: {directory.rstrip('/').split('/')[-1]} (black: reference "
                       "mean and mean ± amplitude; grey: statistics window)", fontsize=9)

@@ -3,7 +3,8 @@
 # runs prm/turek_hron_CASE.prm with the --set overrides SET into $runs/NAME (unless
 # $runs/NAME/summary.json exists already: a study can be resumed), then writes $runs/NAME.json
 # (doc/results/fsi_benchmark.py record: statistics over [T0, T1], errors, cost) and
-# $runs/NAME.png. Needs $fvfsi, $runs and $python.
+# $runs/NAME.png. Needs $fvfsi, $runs and $python; $FVFSI_COMMIT names the commit $fvfsi was
+# built from (default: the tree's), recorded in $runs/NAME/commit.txt.
 run_fsi() {
   local case=$1 name=$2 t0=$3 t1=$4
   shift 4
@@ -11,6 +12,7 @@ run_fsi() {
   for s in "$@"; do args+=(--set "$s"); done
   if [[ ! -f $out/summary.json ]]; then
     echo "$(date -u +%H:%M) $case $name: running (log $out.log)"
+    mkdir -p "$out" && echo "${FVFSI_COMMIT:-$(git rev-parse --short HEAD)}" > "$out/commit.txt"
     "$fvfsi" "prm/turek_hron_$case.prm" "${args[@]}" --set "Fluid scene/Output interval=0" \
       --set "Output directory=$out" > "$out.log" 2>&1 || { echo "$case $name failed, see $out.log"; return 1; }
   fi

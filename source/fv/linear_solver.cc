@@ -25,6 +25,13 @@ namespace fvfsi
     prm.add_parameter("Residual reduction", reduction,
                       "Stop when the residual has fallen by this factor (per linear solve).",
                       Patterns::Double(0, 1));
+    add_selection(prm, "Reduction relative to", reduction_reference,
+                  {{"initial residual", ReductionReference::initial_residual},
+                   {"right-hand side", ReductionReference::right_hand_side}},
+                  "initial residual: every solve reduces the residual of its start value by "
+                  "Residual reduction; right-hand side: the residual falls below Residual "
+                  "reduction times |b| (the residual of a zero start), so a warm start that is "
+                  "already that close takes no iteration.");
     prm.add_parameter("Absolute tolerance", absolute_tolerance,
                       "... or when the residual (l2 norm over all cells) falls below this value.",
                       Patterns::Double(0));
@@ -126,7 +133,8 @@ namespace fvfsi
                                       const double reduction)
   {
     // Stop at `reduction` times the initial residual (ReductionControl takes the solver's first
-    // residual), or at the absolute tolerance; never ask for less than round-off of b or of A x
+    // residual) or times |b| (Reduction relative to = right-hand side: a fixed target however
+    // close the warm start is), or at the absolute tolerance; never ask for less than round-off of b or of A x
     // (Krylov methods stall there, and preconditioned CG started from round-off noise can break
     // down into NaN). |A| is that of the matrix the preconditioner was built for: an estimate,
     // the matrix changes a little between rebuilds. On the pressure of the Turek-Hron CFD3 run
@@ -134,9 +142,14 @@ namespace fvfsi
     // 3.20 ms per solve, with the same iterations (doc/results/performance.md).
     const double b_norm = b.l2_norm(), x_norm = x.l2_norm();
     const double round_off = 1e-13 * std::max(b_norm, x_norm == 0 ? 0.0 : matrix_norm * x_norm);
-    ReductionControl control(parameters.max_iterations,
-                             std::max(parameters.absolute_tolerance, round_off), reduction, false,
-                             false);
+    const double floor = std::max(parameters.absolute_tolerance, round_off);
+    ReductionControl reduction_control(parameters.max_iterations, floor, reduction, false, false);
+    SolverControl rhs_control(parameters.max_iterations, std::max(floor, reduction * b_norm), false,
+                              false);
+    SolverControl& control =
+      parameters.reduction_reference == LinearSolverParameters::ReductionReference::initial_residual
+        ? reduction_control
+        : rhs_control;
     x.zero_out_ghost_values(); // the solver writes the owned entries only
     const CellVector x_start(x);
     const unsigned int failed = with_one_retry(
@@ -169,9 +182,14 @@ namespace fvfsi
     const double x_norm = x_trilinos.l2_norm(); // |A| (a pass over the matrix) only if x != 0
     const double round_off =
       1e-13 * std::max(b_trilinos.l2_norm(), x_norm == 0 ? 0.0 : matrix.linfty_norm() * x_norm);
-    SolverControl control(parameters.max_iterations,
-                          std::max({parameters.absolute_tolerance, reduction * r0, round_off}),
-                          false, false);
+    SolverControl control(
+      parameters.max_iterations,
+      std::max({parameters.absolute_tolerance, round_off,
+                reduction * (parameters.reduction_reference ==
+                                 LinearSolverParameters::ReductionReference::initial_residual
+                               ? r0
+                               : b_trilinos.l2_norm())}),
+      false, false);
     if (r0 <= control.tolerance())
       return 0;
     const unsigned int failed = with_one_retry(

@@ -28,9 +28,17 @@ namespace fvfsi
       ilu,   ///< Trilinos Ifpack ILU(0)
       jacobi ///< diagonal scaling
     };
+    /// What Residual reduction is relative to.
+    enum class ReductionReference
+    {
+      initial_residual, ///< the residual of the start value (every solve gains the same factor)
+      right_hand_side   ///< |b|, the residual of a zero start: a warm start that is already
+                        ///< close needs few or no iterations (mesh motion inside FSI)
+    };
     Method method = Method::cg;
     Preconditioner preconditioner = Preconditioner::amg;
-    double reduction = 1e-6;           ///< relative residual reduction per solve
+    double reduction = 1e-6; ///< relative residual reduction per solve
+    ReductionReference reduction_reference = ReductionReference::initial_residual;
     double absolute_tolerance = 1e-14; ///< ... or this absolute residual
     unsigned int max_iterations = 2000;
 
