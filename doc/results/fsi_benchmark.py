@@ -109,11 +109,19 @@ def error(value, reference):
     return None if value is None else (value - reference) / abs(reference)
 
 
+def summary(directory):
+    """DIRECTORY/summary.json; stops if that run failed (fvfsi writes status "failed")."""
+    with open(directory + "/summary.json") as f:
+        s = json.load(f)
+    if s.get("status") == "failed":
+        sys.exit(f"{directory}: the run failed: {s.get('error')}")
+    return s
+
+
 def record(case, directory, t0, t1, prm, overrides):
     """One RUN record of doc/results/fsi_benchmarks.json."""
     h = load(directory)
-    with open(directory + "/summary.json") as f:
-        s = json.load(f)
+    s = summary(directory)
     r = s["results"]
     coupled = h["coupling_iterations"] > 0
     run = {"prm": prm, "set": overrides,
@@ -224,8 +232,7 @@ def store(key, value):
 
 
 def cavity_record(h, directory, overrides):
-    with open(directory + "/summary.json") as f:
-        s = json.load(f)
+    s = summary(directory)
     r = s["results"]
     return {"h": h, "set": overrides, "commit": git_commit(), "ranks": s["n_mpi_ranks"],
             "fluid_cells": r["fluid_cells"], "solid_cells": r["solid_cells"],

@@ -1,7 +1,7 @@
 # Shared by doc/results/fsi3.sh and fsi2.sh (sourced): one Turek-Hron FSI run and its record.
 #   run_fsi CASE NAME T0 T1 [SET...]
 # runs prm/turek_hron_CASE.prm with the --set overrides SET into $runs/NAME (unless
-# $runs/NAME/summary.json exists already: a study can be resumed), then writes $runs/NAME.json
+# $runs/NAME/summary.json of a completed run exists already: a study can be resumed), then writes $runs/NAME.json
 # (doc/results/fsi_benchmark.py record: statistics over [T0, T1], errors, cost) and
 # $runs/NAME.png. Needs $fvfsi, $runs and $python; $FVFSI_COMMIT names the commit $fvfsi was
 # built from (default: the tree's), recorded in $runs/NAME/commit.txt.
@@ -10,7 +10,7 @@ run_fsi() {
   shift 4
   local out=$runs/$name args=()
   for s in "$@"; do args+=(--set "$s"); done
-  if [[ ! -f $out/summary.json ]]; then
+  if [[ ! -f $out/summary.json ]] || grep -q '"status": "failed"' "$out/summary.json"; then
     echo "$(date -u +%H:%M) $case $name: running (log $out.log)"
     mkdir -p "$out" && echo "${FVFSI_COMMIT:-$(git rev-parse --short HEAD)}" > "$out/commit.txt"
     "$fvfsi" "prm/turek_hron_$case.prm" "${args[@]}" --set "Fluid scene/Output interval=0" \

@@ -103,8 +103,13 @@ namespace fvfsi
       const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       Timer timer;
       const std::string& dir = parameters.run.output_directory;
+      // summary.json is only ever this run's: one left by an earlier run in the same directory
+      // would pass for this run's result if this one fails.
       if (root)
+      {
         std::filesystem::create_directories(dir);
+        std::filesystem::remove(dir + "/summary.json");
+      }
       MPI_Barrier(MPI_COMM_WORLD);
       std::string prm_directory = std::filesystem::path(file).parent_path().string();
       if (prm_directory.empty())
@@ -113,10 +118,29 @@ namespace fvfsi
       summary.set("scene", selection_name(RunParameters::scene_names, parameters.run.scene));
       summary.set("dim", parameters.run.dim);
       summary.set("n_mpi_ranks", Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
-      if (parameters.run.dim == 2)
-        run_scene<2>(parameters, prm_directory, summary);
-      else
-        run_scene<3>(parameters, prm_directory, summary);
+      try
+      {
+        if (parameters.run.dim == 2)
+          run_scene<2>(parameters, prm_directory, summary);
+        else
+          run_scene<3>(parameters, prm_directory, summary);
+      }
+      catch (const std::exception& e)
+      {
+        // A failed run says so in its summary (status "failed" and the message; no results), so
+        // that a script collecting summaries cannot take it for a finished one (written by rank 0
+        // when the error reaches it; the solvers' errors are collective).
+        if (root)
+        {
+          Summary failed;
+          failed.set("status", std::string("failed"));
+          failed.set("error", concise_message(e));
+          failed.set("wall_seconds", timer.wall_time());
+          failed.write(dir + "/summary.json");
+        }
+        throw;
+      }
+      summary.set("status", std::string("completed"));
       summary.set("wall_seconds", Utilities::MPI::max(timer.wall_time(), MPI_COMM_WORLD));
       // Peak resident memory of the largest rank [MB] (VmHWM: libraries included, so memory per
       // cell is the slope between two mesh sizes, not this over n_cells).
