@@ -234,7 +234,7 @@ def store(key, value):
 def cavity_record(h, directory, overrides):
     s = summary(directory)
     r = s["results"]
-    return {"h": h, "set": overrides, "commit": git_commit(), "ranks": s["n_mpi_ranks"],
+    return {"h": h, "set": overrides, "commit": git_commit(directory), "ranks": s["n_mpi_ranks"],
             "fluid_cells": r["fluid_cells"], "solid_cells": r["solid_cells"],
             "wall_seconds": s["wall_seconds"], "coupling_iterations": r["coupling_iterations"],
             "fluid_pseudo_steps": r["fluid_pseudo_steps"],
