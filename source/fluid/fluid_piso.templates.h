@@ -98,7 +98,7 @@ namespace fvfsi
     // from the spatial coefficient a*_P assembled so far.
     const auto [c0, c1, c2] = time_coefficients();
     (void)c0;
-    const double alpha = prm.momentum_relaxation;
+    const double alpha = relaxation;
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
     {
       const double V = geometry.cell_volume[c];
@@ -189,9 +189,8 @@ namespace fvfsi
           : face.w / a_star.local_element(face.P) + (1 - face.w) / a_star.local_element(face.N);
       a_star_f[f] = 1 / inverse_a_star;
       const auto r = volume_ratios(f);
-      c0_face[f] = prm.transient
-                     ? c1 * r[0] - c2 * r[1]
-                     : a_star_f[f] * (1 - prm.momentum_relaxation) / prm.momentum_relaxation;
+      c0_face[f] =
+        prm.transient ? c1 * r[0] - c2 * r[1] : a_star_f[f] * (1 - relaxation) / relaxation;
       gamma_p[f] = 1 / (c0_face[f] + a_star_f[f]);
       const double coefficient = gamma_p[f] * face.area / face.d_n;
       if (face.N == invalid_cell)

@@ -120,8 +120,15 @@ namespace fvfsi
     void move_mesh(const std::vector<double>& swept_volume);
 
     /// Steady: pseudo time steps until the relative change is below the steady tolerance.
-    /// Returns the number of pseudo steps.
+    /// Returns the number of pseudo steps. Where the change makes no progress for a while (no
+    /// new smallest value in 50 steps), alpha is lowered, 1 - alpha doubled: the
+    /// pseudo-transient iteration with alpha near 1 and no pressure relaxation is unstable where
+    /// viscosity dominates (CFD2 at Re = 20 needs alpha <= 0.9, at Re = 1 about 0.7). Below
+    /// 0.2 it stops with an error saying whether the change oscillates or
+    /// stagnates (a flow without a steady state, e.g. vortex shedding).
     unsigned int solve_steady();
+    /// Steady: alpha in use now (Momentum relaxation, or lower after solve_steady()).
+    double momentum_relaxation() const { return relaxation; }
     /// Steady: pseudo time steps of all solves so far.
     unsigned int pseudo_steps() const { return pseudo_step; }
 
@@ -250,7 +257,10 @@ namespace fvfsi
     std::vector<dealii::Tensor<1, dim>> S_old, S_old2;
     std::vector<dealii::Point<dim>> r_f_old, r_f_old2;
     unsigned int pseudo_step = 0; ///< steady: pseudo time steps so far
-    double last_change = 0;       ///< relative_change()
+    /// Steady: alpha in use (Momentum relaxation, lowered by solve_steady() where the pseudo
+    /// steps stop making progress; the steady solution does not depend on it).
+    double relaxation = 1;
+    double last_change = 0; ///< relative_change()
     // The state a time step starts from (after extrapolation), for repeated solves of the step.
     CellVectorField<dim> u_start;
     CellVector p_start;

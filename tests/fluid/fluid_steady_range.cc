@@ -1,0 +1,90 @@
+// The steady fluid mode converges without retuning across the steady range (issue 15, item 2).
+// prm/turek_hron_cfd2.prm on a coarse channel (n = 12, 1921 cells) with the mean inflow U = 0.01,
+// 0.2 and 1 m/s (Re = U D / nu = 1, 20, 100), the shipped Momentum relaxation 0.95, to a steady
+// tolerance of 1e-9:
+//   (a) each converges. With alpha = 0.95 from the start the pseudo-transient iteration (no
+//       pressure relaxation) is unstable where viscosity dominates; solve_steady() lowers alpha
+//       when the relative change makes no progress for 50 pseudo steps (Re = 1: 0.95 -> 0.9 ->
+//       0.8, printed);
+//   (b) the result does not depend on that: the drag at Re = 1 and 20 equals that of a run at a
+//       fixed alpha = 0.7 (never lowered) to 1e-6 relative (the consistent Rhie-Chow flux makes
+//       the steady solution independent of the pseudo time step; measured differences ~1e-8,
+//       the steady tolerance; Re = 100 keeps alpha = 0.95, and tests/fluid/fluid_consistency
+//       compares two alphas there);
+//   (c) a run that cannot reach its tolerance (1e-16, below round-off) stops with an error that
+//       says whether the change oscillates or stagnates, names Momentum relaxation, and comes
+//       within 500 pseudo steps (measured: 391; the change wanders at round-off, 1e-12 - 1e-10,
+//       so alpha is lowered four times), not after the step limit (5000).
+// Printed: verdicts, and the pseudo steps of (a) to stdout only (they depend on round-off).
+#include <fvfsi/scenes/fluid_scene.h>
+
+#include "../test_utilities.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+using namespace fvfsi_test;
+
+struct Result
+{
+  double drag = 0, relaxation = 0;
+  unsigned int pseudo_steps = 0;
+  std::string error;
+};
+
+Result run(const double U, const std::vector<std::string>& extra)
+{
+  std::vector<std::string> overrides = {
+    "Mesh/Generator arguments=12", "Fluid/Steady tolerance=1e-9", "Output directory=out",
+    format("Fluid/Velocity inlet=inlet: %g*1.5*4*y*(0.41-y)/0.41^2; 0", U)};
+  overrides.insert(overrides.end(), extra.begin(), extra.end());
+  const auto p = shipped_case("turek_hron_cfd2", overrides);
+  std::filesystem::create_directories("out");
+  fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, p->time, MPI_COMM_WORLD, ".",
+                             "out");
+  Result r;
+  try
+  {
+    scene.run();
+  }
+  catch (const std::exception& e)
+  {
+    r.error = e.what();
+  }
+  r.drag = scene.body_force()[0];
+  r.relaxation = scene.solver().momentum_relaxation();
+  r.pseudo_steps = scene.solver().pseudo_steps();
+  return r;
+}
+
+int main(int argc, char** argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::ofstream out = open_output();
+  for (const double U : {0.01, 0.2, 1.0})
+  {
+    const Result shipped = run(U, {});
+    const Result fixed = U < 1 ? run(U, {"Fluid/Momentum relaxation=0.7"}) : shipped;
+    std::printf("U = %g: %u pseudo steps, alpha %.3g at the end (alpha 0.7: %u steps), drag %.9g "
+                "/ %.9g\n",
+                U, shipped.pseudo_steps, shipped.relaxation, fixed.pseudo_steps, shipped.drag,
+                fixed.drag);
+    out << format("Re = %g: converged from alpha 0.95: ", U / 1e-2)
+        << yes_no(shipped.error.empty());
+    if (U < 1)
+      out << ", the drag of a run at alpha 0.7 to 1e-6: "
+          << yes_no(fixed.error.empty() &&
+                    std::abs(shipped.drag - fixed.drag) <= 1e-6 * std::abs(fixed.drag));
+    out << "\n";
+  }
+  const Result stuck = run(1.0, {"Fluid/Steady tolerance=1e-16"});
+  std::printf("tolerance 1e-16: %s\n", stuck.error.c_str());
+  const bool which = stuck.error.find("oscillates") != std::string::npos ||
+                     stuck.error.find("stagnates") != std::string::npos;
+  out << "tolerance below round-off: stops within 500 pseudo steps saying how the change behaves "
+         "and naming Momentum relaxation: "
+      << yes_no(stuck.pseudo_steps <= 500 && which &&
+                stuck.error.find("Momentum relaxation") != std::string::npos)
+      << "\n";
+}
