@@ -70,6 +70,14 @@ namespace fvfsi
     x_trilinos.reinit(matrix.locally_owned_domain_indices(), matrix.get_mpi_communicator());
     b_trilinos.reinit(x_trilinos);
     matrix_norm = matrix.linfty_norm();
+    fresh_iterations = -1;
+  }
+
+  unsigned int LinearSolver::iteration_limit() const
+  {
+    return fresh_iterations < 0
+             ? parameters.max_iterations
+             : std::min(parameters.max_iterations, std::max(50u, 10u * unsigned(fresh_iterations)));
   }
 
   unsigned int LinearSolver::solve(const TrilinosWrappers::SparseMatrix& matrix, CellVector& x,
@@ -88,6 +96,8 @@ namespace fvfsi
                                       : solve_gmres(matrix, x, b, what, reduction);
     ++solve_count;
     iteration_count += iterations;
+    if (fresh_iterations < 0) // the first solve with this preconditioner (the retry's, if any)
+      fresh_iterations = int(iterations - failed_iterations);
     return iterations;
   }
 
@@ -110,6 +120,7 @@ namespace fvfsi
       // old eigenvalue bounds. Rebuild it for this matrix and try once more from the same start.
       const unsigned int failed = steps();
       initialize(matrix);
+      control.set_max_steps(parameters.max_iterations);
       restart();
       try
       {
@@ -143,9 +154,8 @@ namespace fvfsi
     const double b_norm = b.l2_norm(), x_norm = x.l2_norm();
     const double round_off = 1e-13 * std::max(b_norm, x_norm == 0 ? 0.0 : matrix_norm * x_norm);
     const double floor = std::max(parameters.absolute_tolerance, round_off);
-    ReductionControl reduction_control(parameters.max_iterations, floor, reduction, false, false);
-    SolverControl rhs_control(parameters.max_iterations, std::max(floor, reduction * b_norm), false,
-                              false);
+    ReductionControl reduction_control(iteration_limit(), floor, reduction, false, false);
+    SolverControl rhs_control(iteration_limit(), std::max(floor, reduction * b_norm), false, false);
     SolverControl& control =
       parameters.reduction_reference == LinearSolverParameters::ReductionReference::initial_residual
         ? reduction_control
@@ -156,6 +166,7 @@ namespace fvfsi
       matrix, control, what,
       [&]() { SolverCG<CellVector>(control).solve(matrix, x, b, *preconditioner); },
       [&]() { x = x_start; });
+    failed_iterations = failed;
     x.update_ghost_values();
     return failed +
            (control.last_step() == numbers::invalid_unsigned_int ? 0 : control.last_step());
@@ -190,6 +201,7 @@ namespace fvfsi
                                ? r0
                                : b_trilinos.l2_norm())}),
       false, false);
+    failed_iterations = 0;
     if (r0 <= control.tolerance())
       return 0;
     const unsigned int failed = with_one_retry(
@@ -199,6 +211,7 @@ namespace fvfsi
                                                      *preconditioner);
       },
       copy_in);
+    failed_iterations = failed;
     for (unsigned int i = 0; i < n; ++i)
       x.local_element(i) = x_trilinos.trilinos_vector()[0][i];
     x.update_ghost_values();

@@ -85,5 +85,13 @@ namespace fvfsi
     dealii::TrilinosWrappers::MPI::Vector x_trilinos, b_trilinos;
     double matrix_norm = 0; ///< |A|_inf of the matrix of the last initialize()
     unsigned long solve_count = 0, iteration_count = 0;
+    /// Iterations of the first solve after initialize() (-1: none yet). A later solve that needs
+    /// ten times as many (at least 50) has outlived its preconditioner: it stops there and is
+    /// repeated with a rebuilt one (with_one_retry), instead of running to Max iterations. (A
+    /// steady fluid's pressure matrix changes with every pseudo step; the cavity of paper 4.2 at
+    /// h = 0.0125 m took 574 s for 30 pseudo steps that way, 14.6 s with a rebuild every step.)
+    int fresh_iterations = -1;
+    unsigned int failed_iterations = 0; ///< of the last solve's failed attempt, if any
+    unsigned int iteration_limit() const;
   };
 } // namespace fvfsi
