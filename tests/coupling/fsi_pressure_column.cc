@@ -1,6 +1,6 @@
 // The FSI scene (Algorithm 1) on prm/fsi_pressure_column.prm: a water column on an elastic block,
 // gravity ramped up over 0.5 s, run to 0.6 s. The static end state is known:
-//   d = rho g H h / (M - rho g h) = 5000 / (13461538.46 - 5000) = 3.715668e-4 m,
+//   d = rho g H h / (M - rho g h) = 5000 / (13461538.46 - 5000) = 3.715666e-4 m,
 // M = E (1 - nu) / ((1 + nu)(1 - 2 nu)) (plane strain, uniaxial strain in the block).
 // The added mass is strong (a time step's fluid pressure answer to a displacement is 1.5 times
 // (first step) to 3.4 times (BDF2) the block's stiffness), so:

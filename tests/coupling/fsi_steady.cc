@@ -1,7 +1,7 @@
 // Steady FSI (Fluid/Transient = Solid/Transient = false): prm/fsi_pressure_column.prm with the
 // full gravity g = 10 m/s^2 from the start, solved for its steady state directly. The water
 // column at rest presses hydrostatically on the elastic block, whose top sinks by
-//   d = rho g H h / (M - rho g h) = 3.715668e-4 m,  M = E (1 - nu) / ((1 + nu)(1 - 2 nu))
+//   d = rho g H h / (M - rho g h) = 3.715666e-4 m,  M = E (1 - nu) / ((1 + nu)(1 - 2 nu))
 // (the number of tests/coupling/fsi_pressure_column). Each coupling iteration converges the
 // steady fluid on the moved mesh and the static block under its tractions.
 // Asserted:
