@@ -1,0 +1,98 @@
+// The steady mode's driver (Fluid/Transient = false): pseudo time steps until the solution stops
+// changing, with the relaxation lowered where the iteration stalls.
+
+#include <deal.II/base/mpi.h>
+
+#include <fvfsi/fluid/fluid_solver.h>
+
+#include <algorithm>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace fvfsi
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // The steady iteration's progress check: pseudo steps without a new smallest relative change
+    // before alpha is lowered, and the smallest alpha tried.
+    constexpr unsigned int steady_window = 50;
+    constexpr double minimum_relaxation = 0.2;
+
+    std::string three_digits(const double x)
+    {
+      std::ostringstream text;
+      text.precision(3);
+      text << x;
+      return text.str();
+    }
+
+    /// "oscillates between a and b" or "stagnates at c": the relative changes of a window.
+    std::string describe_changes(const std::vector<double>& changes)
+    {
+      const auto [low, high] = std::minmax_element(changes.begin(), changes.end());
+      return *high > 2 * *low
+               ? "oscillates between " + three_digits(*low) + " and " + three_digits(*high)
+               : "stagnates at " + three_digits(*high);
+    }
+  } // namespace
+
+  template <int dim>
+  unsigned int FluidSolver<dim>::solve_steady()
+  {
+    double change = 0, best = std::numeric_limits<double>::max();
+    unsigned int best_step = 0;
+    std::vector<double> window; // the changes since the last new smallest one
+    for (unsigned int k = 1; k <= prm.max_steady_iterations; ++k)
+    {
+      ++pseudo_step;
+      solve_piso_step();
+      end_time_step();
+      change = last_change;
+      if (k % 100 == 0)
+        pcout << "fvfsi: fluid pseudo time step " << k << ": relative change " << change
+              << " (tolerance " << prm.steady_tolerance << "), continuity error "
+              << continuity_error() << "\n";
+      if (change < prm.steady_tolerance)
+        return k;
+      if (change < best)
+      {
+        best = change;
+        best_step = k;
+        window.clear();
+        continue;
+      }
+      window.push_back(change);
+      if (k - best_step < steady_window)
+        continue;
+      // No progress in steady_window pseudo steps: a smaller pseudo time step, or give up.
+      const double lowered = 1 - std::max(2 * (1 - relaxation), 0.05); // 1, 0.95, 0.9, 0.8, ...
+      if (lowered < minimum_relaxation)
+        throw std::runtime_error(
+          "Fluid: the steady solution does not converge: over the last " +
+          std::to_string(steady_window) + " pseudo time steps (to " + std::to_string(k) +
+          ") the relative change " + describe_changes(window) + " at Momentum relaxation " +
+          three_digits(relaxation) + " (lowered from " + three_digits(prm.momentum_relaxation) +
+          "); the flow may have no steady state (e.g. vortex shedding): run it with "
+          "Fluid/Transient = true");
+      pcout << "fvfsi: fluid steady: the relative change " << describe_changes(window)
+            << " over pseudo steps " << best_step + 1 << "-" << k
+            << ": Momentum relaxation lowered from " << relaxation << " to " << lowered << "\n";
+      relaxation = lowered;
+      best = change;
+      best_step = k;
+      window.clear();
+    }
+    throw std::runtime_error("Fluid: the steady solution did not converge in " +
+                             std::to_string(prm.max_steady_iterations) +
+                             " pseudo time steps (relative change " + Utilities::to_string(change) +
+                             ", still falling); raise Fluid/Max steady iterations");
+  }
+
+  template unsigned int FluidSolver<2>::solve_steady();
+  template unsigned int FluidSolver<3>::solve_steady();
+} // namespace fvfsi
