@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Channel flow over a cavity with a flexible bottom (paper section 4.2): the mesh study of
-# doc/results/fsi.md. prm/cavity_flexible_bottom.prm (steady FSI) on the paper's four cell sizes
+# doc/results/cavity.md. prm/cavity_flexible_bottom.prm (steady FSI) on the paper's four cell sizes
 # h = 0.1, 0.05, 0.025, 0.0125 m, fluid and plate meshes refined together; prints the markdown
 # table (u_y(A), F_y, errors against the finest mesh, coupling iterations, fluid pseudo steps,
 # solid outer iterations, wall time) and the observed orders of Eq. 34, writes
