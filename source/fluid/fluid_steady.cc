@@ -6,6 +6,7 @@
 #include <fvfsi/fluid/fluid_solver.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -18,10 +19,11 @@ namespace fvfsi
 
   namespace
   {
-    // The steady iteration's progress check: pseudo steps without a new smallest relative change
-    // before alpha is lowered, and the smallest alpha tried.
+    // The steady iteration's progress check: the pseudo steps are taken in windows of this
+    // many; a window whose geometric mean of the relative change is not 5% below the previous
+    // one's has made no progress; alpha is not lowered below minimum_relaxation.
     constexpr unsigned int steady_window = 50;
-    constexpr double minimum_relaxation = 0.2;
+    constexpr double minimum_relaxation = 0.3;
 
     std::string three_digits(const double x)
     {
@@ -31,22 +33,30 @@ namespace fvfsi
       return text.str();
     }
 
+    double geometric_mean(const std::vector<double>& changes)
+    {
+      double log_sum = 0;
+      for (const double c : changes)
+        log_sum += std::log(std::max(c, 1e-300));
+      return std::exp(log_sum / changes.size());
+    }
+
     /// "oscillates between a and b" or "stagnates at c": the relative changes of a window.
     std::string describe_changes(const std::vector<double>& changes)
     {
       const auto [low, high] = std::minmax_element(changes.begin(), changes.end());
       return *high > 2 * *low
                ? "oscillates between " + three_digits(*low) + " and " + three_digits(*high)
-               : "stagnates at " + three_digits(*high);
+               : "stagnates at " + three_digits(geometric_mean(changes));
     }
   } // namespace
 
   template <int dim>
   unsigned int FluidSolver<dim>::solve_steady()
   {
-    double change = 0, best = std::numeric_limits<double>::max();
-    unsigned int best_step = 0;
-    std::vector<double> window; // the changes since the last new smallest one
+    double change = 0;
+    double previous_mean = -1;  // of the last full window since alpha was set (-1: none yet)
+    std::vector<double> window; // the changes of the current window
     for (unsigned int k = 1; k <= prm.max_steady_iterations; ++k)
     {
       ++pseudo_step;
@@ -59,18 +69,18 @@ namespace fvfsi
               << continuity_error() << "\n";
       if (change < prm.steady_tolerance)
         return k;
-      if (change < best)
+      window.push_back(change);
+      if (window.size() < steady_window)
+        continue;
+      const double mean = geometric_mean(window);
+      if (previous_mean < 0 || mean < 0.95 * previous_mean)
       {
-        best = change;
-        best_step = k;
+        previous_mean = mean; // progress (or the first window): go on
         window.clear();
         continue;
       }
-      window.push_back(change);
-      if (k - best_step < steady_window)
-        continue;
-      // No progress in steady_window pseudo steps: a smaller pseudo time step, or give up.
-      const double lowered = 1 - std::max(2 * (1 - relaxation), 0.05); // 1, 0.95, 0.9, 0.8, ...
+      // No progress over a window: a smaller pseudo time step, or give up.
+      const double lowered = 1 - std::max(2 * (1 - relaxation), 0.05); // 1, 0.95, 0.9, 0.8, 0.6
       if (lowered < minimum_relaxation)
         throw std::runtime_error(
           "Fluid: the steady solution does not converge: over the last " +
@@ -80,11 +90,10 @@ namespace fvfsi
           "); the flow may have no steady state (e.g. vortex shedding): run it with "
           "Fluid/Transient = true");
       pcout << "fvfsi: fluid steady: the relative change " << describe_changes(window)
-            << " over pseudo steps " << best_step + 1 << "-" << k
+            << " over pseudo steps " << k - steady_window + 1 << "-" << k << " (no progress)"
             << ": Momentum relaxation lowered from " << relaxation << " to " << lowered << "\n";
       relaxation = lowered;
-      best = change;
-      best_step = k;
+      previous_mean = -1;
       window.clear();
     }
     throw std::runtime_error("Fluid: the steady solution did not converge in " +
