@@ -70,14 +70,16 @@ namespace fvfsi
     }
   }
 
-  unsigned int JacobianSolver::solve(Vector& x, const Vector& b, const std::string& what)
+  unsigned int JacobianSolver::solve(Vector& x, const Vector& b, const std::string& what,
+                                     const double reduction)
   {
     if (direct)
     {
       direct->solve(x, b);
       return 0;
     }
-    SolverControl control(parameters.max_iterations, parameters.reduction * b.l2_norm(), false,
+    SolverControl control(parameters.max_iterations,
+                          (reduction >= 0 ? reduction : parameters.reduction) * b.l2_norm(), false,
                           false);
     // Right preconditioning: the control sees the true residual.
     SolverGMRES<Vector> gmres(control,

@@ -89,7 +89,14 @@ namespace fvfsi
                       Patterns::Integer(1));
     prm.add_parameter("Newton update every iteration", newton_update_every_iteration,
                       "coupled, St. Venant-Kirchhoff: true: a new Jacobian every Newton "
-                      "iteration; false: keep it while the residual falls by 10 per iteration.");
+                      "iteration; false: keep it (also from one time step to the next) while "
+                      "the Newton corrections shrink by 10 per iteration.");
+    prm.add_parameter("Jacobian-free Newton", jacobian_free,
+                      "coupled: false: the Jacobian assembled by probing and solved by `Solid "
+                      "Newton linear solver`; true: Jacobian-free Newton-Krylov, GMRES (settings "
+                      "of `Solid Newton linear solver`) on directional differences of the "
+                      "residual, preconditioned by the segregated operator (one AMG V-cycle of "
+                      "each component's A_j, diagonal scaling of the boundary rows).");
     prm.add_parameter("Newton log", newton_log,
                       "coupled: print a line per Newton iteration (step length, residual, "
                       "correction).");

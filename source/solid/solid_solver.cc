@@ -6,6 +6,7 @@
 #include "solid_coupled.templates.h"
 #include "solid_face_forces.templates.h"
 #include "solid_gradients.templates.h"
+#include "solid_jacobian_free.templates.h"
 
 #include <cmath>
 #include <limits>

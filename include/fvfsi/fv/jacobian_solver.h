@@ -47,8 +47,10 @@ namespace fvfsi
     bool initialized() const { return matrix != nullptr; }
 
     /// matrix x = b (x: start value for GMRES). Returns the Krylov iterations (0: direct).
-    /// Throws a std::runtime_error naming `what` if GMRES does not converge.
-    unsigned int solve(Vector& x, const Vector& b, const std::string& what);
+    /// `reduction` >= 0 replaces the parameters' Residual reduction for this solve. Throws a
+    /// std::runtime_error naming `what` if GMRES does not converge.
+    unsigned int solve(Vector& x, const Vector& b, const std::string& what,
+                       double reduction = -1);
 
   private:
     JacobianSolverParameters parameters;

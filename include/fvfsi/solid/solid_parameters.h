@@ -91,8 +91,12 @@ namespace fvfsi
     unsigned int max_newton_iterations = 25;
     /// coupled: reassemble the Jacobian of St. Venant-Kirchhoff every Newton iteration (true), or
     /// keep it while Newton's method converges fast (false).
-    bool newton_update_every_iteration = true;
+    bool newton_update_every_iteration = false;
     bool newton_log = false; ///< coupled: a line per Newton iteration
+    /// coupled: the Jacobian assembled by probing (solved by Solid Newton linear solver), or
+    /// Jacobian-free Newton-Krylov (GMRES on directional differences of the residual,
+    /// preconditioned by the segregated operator: AMG of each component's A_j).
+    bool jacobian_free = false;
     JacobianSolverParameters newton_solver;
 
     std::string fixed_displacement, traction, pressure, symmetry, external_traction;

@@ -81,9 +81,12 @@ namespace fvfsi
     /// Outer iterations (Solid/Algorithm = coupled: Newton iterations) of the last
     /// solve_current_step().
     unsigned int outer_iterations() const { return last_outer_iterations; }
-    /// Solid/Algorithm = coupled: Jacobian assemblies and residual evaluations so far.
+    /// Solid/Algorithm = coupled: Jacobian assemblies (Jacobian-free: base points) and residual
+    /// evaluations so far.
     unsigned long jacobian_assemblies() const { return n_jacobians; }
     unsigned long residual_evaluations() const { return n_residuals; }
+    /// ... and GMRES iterations of the Newton systems so far.
+    unsigned long krylov_iterations() const { return n_krylov; }
 
     const LameParameters& material() const { return lame; }
 
@@ -156,6 +159,17 @@ namespace fvfsi
                        NewtonVector& dx_bar);
     double newton_norm(const NewtonVector& v) const;
     void assemble_jacobian(const NewtonVector& x, const NewtonVector& F);
+    /// J dx = rhs with the Jacobian of the last assemble_jacobian() (`reduction` >= 0: GMRES's
+    /// residual reduction for this solve).
+    void solve_newton_system(NewtonVector& dx, const NewtonVector& rhs, double reduction = -1);
+    /// Jacobian-free Newton-Krylov (solid_jacobian_free.templates.h): the base point of the
+    /// directional differences, and the segregated preconditioner for the clock's c0.
+    void setup_jacobian_free(const NewtonVector& x, const NewtonVector& F);
+    void apply_segregated_preconditioner(NewtonVector& y, const NewtonVector& r) const;
+    NewtonVector jfnk_x, jfnk_F;
+    std::array<dealii::TrilinosWrappers::PreconditionAMG, dim> jfnk_amg;
+    double jfnk_mass_coefficient = -1;
+    NewtonVector jfnk_diagonal; ///< of the boundary rows (1 on the cell rows)
     /// x from the solver's state.
     void coupled_state(NewtonVector& x) const;
     /// F(x): sets the state (u, boundary values, vertex values, gradients) from x, computes one
@@ -175,7 +189,7 @@ namespace fvfsi
     std::unique_ptr<JacobianSolver> jacobian_solver;
     double jacobian_mass_coefficient = -1; ///< c0^2 of the linear-elastic Jacobian, -1: none
     std::array<CellVector, dim> coupled_cell_residual;
-    unsigned long n_jacobians = 0, n_residuals = 0;
+    unsigned long n_jacobians = 0, n_residuals = 0, n_krylov = 0;
 
     const FVGeometry<dim>& geometry;
     SolidParameters parameters;
