@@ -9,7 +9,7 @@ fvfsi=${1:-build/fvfsi}
 exact=$(python3 -c "print(5000/(1e7*0.7/(1.3*0.4)-5000))")
 echo "| method | relaxation | reuse | d [m] | error | coupling iterations | max per step | wall [s] (median of 3) |"
 echo "|---|---:|---:|---:|---:|---:|---:|---:|"
-for setting in "fixed 0.4 0" "Aitken 0.4 0" "IQN-ILS 0.4 0" "IQN-ILS 0.4 3" "fixed 1 0"; do
+for setting in "fixed 0.4 0" "Aitken 0.4 0" "IQN-ILS 0.4 0" "IQN-ILS 0.4 3" "IQN-IMVJ 0.4 0" "fixed 1 0"; do
   set -- $setting
   walls=()
   for run in 1 2 3; do

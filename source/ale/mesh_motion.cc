@@ -120,6 +120,15 @@ namespace fvfsi
     if (moving.empty())
       throw std::runtime_error(
         "Mesh motion/Moving patches: Type = Laplace needs at least one patch");
+    for (auto& patch : moving)
+    {
+      for (const auto& face : reference.faces)
+        if (face.N == invalid_cell && face.patch == patch.id)
+          patch.vertices.insert(patch.vertices.end(), face.vertices.begin(), face.vertices.end());
+      std::sort(patch.vertices.begin(), patch.vertices.end());
+      patch.vertices.erase(std::unique(patch.vertices.begin(), patch.vertices.end()),
+                           patch.vertices.end());
+    }
     // Every boundary is Dirichlet: the moving patches' displacement, zero elsewhere.
     boundary_vertex.assign(reference.vertices().size(), -1);
     for (const auto& face : reference.faces)
@@ -174,16 +183,9 @@ namespace fvfsi
   }
 
   template <int dim>
-  std::vector<unsigned int> MeshMotion<dim>::patch_vertices(const std::string& name)
+  const std::vector<unsigned int>& MeshMotion<dim>::patch_vertices(const std::string& name)
   {
-    const unsigned int id = moving_patch(name).id;
-    std::vector<unsigned int> vertices;
-    for (const auto& face : reference.faces)
-      if (face.N == invalid_cell && face.patch == id)
-        vertices.insert(vertices.end(), face.vertices.begin(), face.vertices.end());
-    std::sort(vertices.begin(), vertices.end());
-    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-    return vertices;
+    return moving_patch(name).vertices;
   }
 
   template <int dim>
@@ -206,14 +208,10 @@ namespace fvfsi
     for (auto& patch : moving)
       if (patch.expression)
         patch.expression->set_time(t);
-    for (const auto& face : reference.faces)
-      if (face.N == invalid_cell)
-        for (const auto& patch : moving)
-          if (patch.id == face.patch)
-            for (const unsigned int v : face.vertices)
-              for (unsigned int j = 0; j < dim; ++j)
-                d_vertex[v][j] =
-                  patch.expression ? patch.expression->value(X[v], j) : patch.given[v][j];
+    for (const auto& patch : moving)
+      for (const unsigned int v : patch.vertices)
+        for (unsigned int j = 0; j < dim; ++j)
+          d_vertex[v][j] = patch.expression ? patch.expression->value(X[v], j) : patch.given[v][j];
     for (unsigned int v = 0; v < d_vertex.size(); ++v)
       if (boundary_vertex[v] == 0)
         d_vertex[v] = Tensor<1, dim>();

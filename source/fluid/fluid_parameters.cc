@@ -45,7 +45,8 @@ namespace fvfsi
                       Patterns::Double(0.01, 1));
     prm.add_parameter(
       "Steady tolerance", steady_tolerance,
-      "Steady: stop when max|u^k - u^(k-1)| / max|u| over one pseudo step is below this.",
+      "Steady: stop when max|u^k - u^(k-1)| / U over one pseudo step is below this (U: "
+      "the larger of max|u| and sqrt(max p - min p), p kinematic).",
       Patterns::Double(0));
     prm.add_parameter(
       "Max steady iterations", max_steady_iterations,

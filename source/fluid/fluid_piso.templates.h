@@ -110,7 +110,7 @@ namespace fvfsi
       {
         B_time[j][c] = c1V * u_old.components[j].local_element(c) -
                        c2 * V_old2[c] * u_old2.components[j].local_element(c);
-        B_rest[j].local_element(c) += V * body_force.value(geometry.centroid[c], j);
+        B_rest[j].local_element(c) += V * body_force_value[j][c];
       }
     }
   }

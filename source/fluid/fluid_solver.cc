@@ -28,6 +28,7 @@ namespace fvfsi
         momentum_solver(parameters.momentum_solver), pressure_solver(parameters.pressure_solver)
   {
     initialize_function(body_force, prm.body_force, "Fluid/Body force");
+    evaluate_body_force();
     setup_boundary_conditions(mesh_parameters);
 
     for (auto* field : {&u, &u_old, &u_old2, &h})
@@ -65,6 +66,7 @@ namespace fvfsi
     operators.laplacian.reinit_matrix(momentum_matrix);
     operators.laplacian.reinit_matrix(pressure_matrix);
     set_initial_conditions();
+    update_volume_ratios();
   }
 
   template <int dim>
@@ -223,17 +225,19 @@ namespace fvfsi
       S_old[f] = geometry.faces[f].S;
       r_f_old[f] = geometry.faces[f].centre;
     }
+    update_volume_ratios();
   }
 
   template <int dim>
   void FluidSolver<dim>::move_mesh(const std::vector<double>& swept_volume)
   {
-    if (!prm.transient)
-      throw std::runtime_error(
-        "Fluid: the mesh can only move in a transient run (Fluid/Transient)");
     AssertDimension(swept_volume.size(), geometry.faces.size());
+    // Steady (a steady FSI iteration moves the mesh between steady solves): the state is at rest
+    // on the new mesh, no mesh flux (compute_mesh_fluxes() keeps F^mesh = 0), only the geometry
+    // changes.
     swept = swept_volume;
     operators.reinit(); // their coefficients depend on the geometry
+    update_volume_ratios();
   }
 
   template <int dim>
@@ -248,19 +252,28 @@ namespace fvfsi
   }
 
   template <int dim>
-  std::array<double, 2> FluidSolver<dim>::volume_ratios(const unsigned int f) const
+  void FluidSolver<dim>::update_volume_ratios()
   {
-    const auto& face = geometry.faces[f];
+    // Once per change of the geometry or the time levels, not per face and PISO corrector.
+    face_volume_ratio.resize(geometry.faces.size());
     const auto ratios = [this](const unsigned int c)
     {
       const double V = geometry.cell_volume[c];
       return std::array<double, 2>{{V_old[c] / V, V_old2[c] / V}};
     };
-    const auto r_P = ratios(face.P);
-    if (face.N == invalid_cell)
-      return r_P;
-    const auto r_N = ratios(face.N);
-    return {{face.w * r_P[0] + (1 - face.w) * r_N[0], face.w * r_P[1] + (1 - face.w) * r_N[1]}};
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      const auto& face = geometry.faces[f];
+      const auto r_P = ratios(face.P);
+      if (face.N == invalid_cell)
+        face_volume_ratio[f] = r_P;
+      else
+      {
+        const auto r_N = ratios(face.N);
+        face_volume_ratio[f] = {
+          {face.w * r_P[0] + (1 - face.w) * r_N[0], face.w * r_P[1] + (1 - face.w) * r_N[1]}};
+      }
+    }
   }
 
   template <int dim>
@@ -287,9 +300,21 @@ namespace fvfsi
   }
 
   template <int dim>
+  void FluidSolver<dim>::evaluate_body_force()
+  {
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      body_force_value[j].resize(geometry.n_owned_cells());
+      for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+        body_force_value[j][c] = body_force.value(geometry.centroid[c], j);
+    }
+  }
+
+  template <int dim>
   void FluidSolver<dim>::begin_time_step()
   {
     body_force.set_time(clock.time());
+    evaluate_body_force();
     conditions.set_time(clock.time());
     if (prm.transient && prm.flux_extrapolation && clock.step() > 1)
     {
@@ -355,15 +380,24 @@ namespace fvfsi
   template <int dim>
   void FluidSolver<dim>::end_time_step()
   {
-    // Relative change over the step.
-    double max_du = 0, max_u = 0;
+    // Relative change over the step, max|du| / U. The velocity scale U is max|u|; steady, at
+    // least the speed the pressure differences drive, sqrt(max p - min p) (p kinematic,
+    // Bernoulli): a fluid at rest under gravity has no speed but a pressure range, and its
+    // change relative to max|u| would be round-off over round-off.
+    double max_du = 0, max_u = 0, max_p = -1e300, min_p = 1e300;
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
     {
       max_du = std::max(max_du, (u[c] - u_old[c]).norm());
       max_u = std::max(max_u, u[c].norm());
+      max_p = std::max(max_p, p.local_element(c));
+      min_p = std::min(min_p, p.local_element(c));
     }
     max_du = Utilities::MPI::max(max_du, geometry.comm());
     max_u = Utilities::MPI::max(max_u, geometry.comm());
+    if (!prm.transient)
+      max_u = std::max(max_u, std::sqrt(std::max(Utilities::MPI::max(max_p, geometry.comm()) -
+                                                   Utilities::MPI::min(min_p, geometry.comm()),
+                                                 0.0)));
     shift_time_levels();
     last_change = max_du / std::max(max_u, 1e-300);
   }

@@ -1,9 +1,11 @@
 #include <deal.II/base/utilities.h>
 
+#include <fvfsi/io/progress.h>
 #include <fvfsi/mesh/mesh_builder.h>
 #include <fvfsi/scenes/fsi_scene.h>
 
 #include <cmath>
+#include <iomanip>
 #include <stdexcept>
 
 namespace fvfsi
@@ -29,13 +31,18 @@ namespace fvfsi
         solid_mesh_parameters(input.solid_mesh), fluid_parameters(input.fluid),
         fluid_scene_parameters(input.fluid_scene), solid_parameters(input.solid),
         solid_scene_parameters(input.solid_scene), prm(input.fsi), prm_directory(prm_directory),
-        output_directory(output_directory),
+        output_directory(output_directory), steady(!input.fluid.transient),
         pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0),
         timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times), clock(input.time),
         fluid_tria(comm), solid_tria(comm), probes(input.solid_scene.probes, "Solid scene/Probes")
   {
-    if (!fluid_parameters.transient)
-      throw std::runtime_error("FSI: the fluid must be transient (Fluid/Transient = true)");
+    // Transient fluid with a transient or quasi-static solid; or both steady (solve_steady()).
+    if (steady && solid_parameters.transient)
+      throw std::runtime_error("FSI: a steady fluid (Fluid/Transient = false) needs a steady "
+                               "solid: set Solid/Transient = false");
+    if (steady && prm.coupling.start_time > 0)
+      throw std::runtime_error("FSI: Coupling/Start time has no meaning in a steady run "
+                               "(Fluid/Transient = false): set it to 0");
     if (fluid_scene_parameters.mesh_motion.type != MeshMotionParameters::Type::laplace)
       throw std::runtime_error(
         "FSI: the fluid mesh must follow the interface: set Mesh motion/Type = "
@@ -87,12 +94,22 @@ namespace fvfsi
   {
     fluid_output = std::make_unique<VtuOutput<dim>>(*fluid_fv, output_directory, "fluid");
     solid_output = std::make_unique<VtuOutput<dim>>(*solid_fv, output_directory, "solid");
-    std::vector<std::string> columns = {"t", "coupling_iterations", "relative_residual", "drag",
-                                        "lift"};
+    // Transient: one line per time step; steady: one per coupling iteration (its convergence).
+    std::vector<std::string> columns =
+      steady
+        ? std::vector<std::string>{"coupling_iteration",
+                                   "relative_residual",
+                                   "fluid_pseudo_steps",
+                                   "solid_outer_iterations",
+                                   "drag",
+                                   "lift"}
+        : std::vector<std::string>{"t", "coupling_iterations", "relative_residual", "drag", "lift"};
     for (unsigned int i = 0; i < probes.size(); ++i)
       for (const auto& c : vector_columns<dim>("u", "_" + probes.name(i)))
         columns.push_back(c);
-    history = std::make_unique<HistoryFile>(output_directory + "/fsi_history.txt", columns, comm);
+    columns.push_back("min_volume_ratio"); // min over the fluid cells of V_P / V_P(reference)
+    history = std::make_unique<HistoryFile>(
+      output_directory + (steady ? "/fsi_steady_history.txt" : "/fsi_history.txt"), columns, comm);
   }
 
   template <int dim>
@@ -125,8 +142,8 @@ namespace fvfsi
       if (!cell->is_artificial())
         for (const unsigned int v : cell->vertex_indices())
           cell->vertex(v) = x[cell->vertex_index(v)];
-    result.min_volume_ratio = std::min(
-      result.min_volume_ratio, min_volume_ratio(*fluid_fv, *fluid_reference_fv, clock.time()));
+    volume_ratio = min_volume_ratio(*fluid_fv, *fluid_reference_fv, clock.time());
+    result.min_volume_ratio = std::min(result.min_volume_ratio, volume_ratio);
     fluid->move_mesh(swept);
   }
 
@@ -164,6 +181,7 @@ namespace fvfsi
     {
       TimerOutput::Scope scope(timer, "solid");
       solid->solve_current_step(); // 2d
+      result.solid_outer_iterations += solid->outer_iterations();
     }
     return solid_interface_displacement(); // 2e: d~ (section 3.5.2)
   }
@@ -173,14 +191,36 @@ namespace fvfsi
   {
     // 1: the new time level, and the predictor: linear extrapolation of d.
     clock.advance();
+    if (clock.time() <= prm.coupling.start_time + 1e-9 * clock.time_step())
+    {
+      // Before the coupling starts: the fluid alone on the fixed mesh, the solid at rest (its
+      // time levels stay zero, so the first coupled step starts it from rest).
+      TimerOutput::Scope scope(timer, "fluid");
+      fluid->solve_time_step();
+      record_time_history(0, 0);
+      return 0;
+    }
     fluid->begin_time_step();
     solid->begin_time_step();
-    acceleration->new_time_step();
     vertices_old = fluid_fv->vertices();
     d = d_old;
     if (clock.step() > 2)
       d.sadd(2, -1, d_older); // 2 d^n - d^(n-1)
 
+    const unsigned int k = converge_interface(); // 2
+    // 3: accept the step.
+    fluid->end_time_step();
+    solid->end_time_step();
+    d_older = d_old;
+    d_old = d;
+    record_time_history(k, acceleration->relative_residual());
+    return k;
+  }
+
+  template <int dim>
+  unsigned int FsiScene<dim>::converge_interface()
+  {
+    acceleration->new_time_step();
     double residual = 0;
     for (unsigned int k = 1; k <= prm.coupling.max_iterations; ++k)
     {
@@ -189,42 +229,89 @@ namespace fvfsi
       {
         const InterfaceVector d_tilde = coupling_iteration(d); // 2a-2e
         TimerOutput::Scope scope(timer, "acceleration");
-        next = acceleration->next(d, d_tilde); // 2f: Eqs 30-31 or IQN-ILS
+        next = acceleration->next(d, d_tilde); // 2f: Eqs 30-31, Aitken or IQN
       }
       catch (const std::exception& e)
       {
         throw std::runtime_error(
-          "FSI: at " + clock.step_name() + ", coupling iteration " + std::to_string(k) +
+          "FSI: at " + step_name() + ", coupling iteration " + std::to_string(k) +
           (k > 1
              ? " (relative interface residual before it: " + Utilities::to_string(residual) + ")"
              : std::string()) +
           ": " + e.what() +
           (k > 2 ? "\n(a coupling iteration that diverges ends like this: use Coupling/Method = "
                    "IQN-ILS or Aitken, or a smaller Coupling/Relaxation)"
-                 : std::string()));
+                 : std::string()) +
+          (!steady && result.n_coupled_steps == 0
+             ? "\n(the first coupled time step: if the flow starts impulsively, let it develop "
+               "on the fixed mesh first, Coupling/Start time)"
+             : std::string()));
       }
       residual = acceleration->relative_residual();
       if (!std::isfinite(residual))
-        throw std::runtime_error("FSI: the interface residual is not finite at " +
-                                 clock.step_name() + ", coupling iteration " + std::to_string(k));
-      if (residual <= prm.coupling.tolerance)
-      {
-        // 3: accept the step.
-        fluid->end_time_step();
-        solid->end_time_step();
-        d_older = d_old;
-        d_old = d;
-        record_time_history(k, residual);
-        return k;
-      }
+        throw std::runtime_error("FSI: the interface residual is not finite at " + step_name() +
+                                 ", coupling iteration " + std::to_string(k));
+      if (steady)
+        record_steady_iteration(k, residual);
+      if (acceleration->converged()) // Tolerance (Eq. 30) or Residual reduction
+        return k; // d is the accepted displacement: both solvers' states belong to it
       d = next;
     }
     throw std::runtime_error(
-      "FSI: the coupling iterations did not converge at " + clock.step_name() +
+      "FSI: the coupling iterations did not converge at " + step_name() +
       ": relative interface residual " + Utilities::to_string(residual) + " after " +
       std::to_string(prm.coupling.max_iterations) +
       " iterations (Coupling/Method = IQN-ILS converges where relaxation does not; or raise "
       "Coupling/Max iterations)");
+  }
+
+  template <int dim>
+  std::string FsiScene<dim>::step_name() const
+  {
+    return steady ? std::string("the steady coupled solve") : clock.step_name();
+  }
+
+  template <int dim>
+  unsigned int FsiScene<dim>::solve_steady()
+  {
+    // Algorithm 1 without time: one "step" whose coupling iterations converge the steady coupled
+    // state. Each iteration moves the mesh, converges the steady fluid on it (pseudo time steps,
+    // warm-started from the last iteration's flow) and the static solid under its tractions
+    // (warm-started from the last displacement); no predictor, d starts from the reference.
+    fluid->begin_time_step();
+    solid->begin_time_step();
+    vertices_old = fluid_fv->vertices();
+    const unsigned int k = converge_interface();
+    fluid->end_time_step();
+    solid->end_time_step();
+    return k;
+  }
+
+  template <int dim>
+  void FsiScene<dim>::record_steady_iteration(const unsigned int k, const double residual)
+  {
+    const Tensor<1, dim> force = fluid_force();
+    std::vector<double> line = {
+      double(k), residual, double(fluid->pseudo_steps()), double(result.solid_outer_iterations),
+      force[0],  force[1]};
+    for (unsigned int i = 0; i < probes.size(); ++i)
+      append(line, solid_probe(i));
+    line.push_back(volume_ratio);
+    history->write_line(line);
+    last_force = force;
+    pcout << "fvfsi: FSI steady coupling iteration " << k << ": relative interface residual "
+          << residual << " (tolerance " << prm.coupling.tolerance << "), fluid pseudo steps "
+          << fluid->pseudo_steps() << ", solid outer iterations " << result.solid_outer_iterations
+          << "\n";
+  }
+
+  template <int dim>
+  Tensor<1, dim> FsiScene<dim>::fluid_force() const
+  {
+    Tensor<1, dim> force;
+    for (const auto& patch : fluid_scene_parameters.force_patches)
+      force += fluid->patch_force(fluid_mesh_parameters.patch_id(patch));
+    return force;
   }
 
   template <int dim>
@@ -236,18 +323,15 @@ namespace fvfsi
   template <int dim>
   void FsiScene<dim>::record_time_history(const unsigned int iterations, const double residual)
   {
-    Tensor<1, dim> force;
-    for (const auto& patch : fluid_scene_parameters.force_patches)
-      force += fluid->patch_force(fluid_mesh_parameters.patch_id(patch));
-    history_t.push_back(clock.time());
-    history_drag.push_back(force[0]);
-    history_lift.push_back(force[1]);
+    const Tensor<1, dim> force = fluid_force();
+    last_force = force;
     std::vector<double> line = {clock.time(), double(iterations), residual, force[0], force[1]};
     for (unsigned int i = 0; i < probes.size(); ++i)
     {
       const Tensor<1, dim> u = solid_probe(i);
       append(line, u);
     }
+    line.push_back(volume_ratio);
     history->write_line(line);
   }
 
@@ -273,10 +357,22 @@ namespace fvfsi
           << fluid_zone->n_faces() << " fluid / " << solid_zone->n_faces()
           << " solid faces, coupling "
           << selection_name(CouplingParameters::method_names, prm.coupling.method) << "\n";
+    if (steady)
+    {
+      result.total_coupling_iterations = result.max_coupling_iterations = solve_steady();
+      pcout << "fvfsi: FSI steady state after " << result.total_coupling_iterations
+            << " coupling iterations, " << fluid->pseudo_steps() << " fluid pseudo steps, "
+            << result.solid_outer_iterations << " solid outer iterations\n";
+      output_results();
+      timer.print_summary();
+      return;
+    }
     const unsigned int total = clock.n_steps();
+    const Progress progress;
     for (unsigned int step = 1; step <= total; ++step)
     {
       unsigned int iterations = 0;
+      Timer step_timer;
       try
       {
         iterations = solve_time_step();
@@ -289,12 +385,21 @@ namespace fvfsi
         throw;
       }
       result.n_time_steps = step;
+      if (iterations > 0)
+        result.coupled_wall_seconds += step_timer.wall_time();
+      result.n_coupled_steps += iterations > 0;
       result.total_coupling_iterations += iterations;
       result.max_coupling_iterations = std::max(result.max_coupling_iterations, iterations);
       if (step % fluid_scene_parameters.progress_interval == 0 || step == total)
-        pcout << "fvfsi: FSI step " << step << "/" << total << ", t = " << clock.time() << " s, "
-              << iterations << " coupling iterations (mean "
-              << double(result.total_coupling_iterations) / step << ")\n";
+      {
+        pcout << "fvfsi: FSI step " << step << "/" << total << ", t = " << clock.time() << " s, ";
+        if (iterations > 0)
+          pcout << iterations << " coupling iterations (mean " << std::setprecision(3)
+                << result.mean_coupling_iterations() << ")";
+        else
+          pcout << "fluid alone (before Coupling/Start time)";
+        pcout << ", " << progress.elapsed_and_left(step, total) << "\n" << std::setprecision(6);
+      }
       if (fluid_scene_parameters.output_interval > 0 &&
           step % fluid_scene_parameters.output_interval == 0)
         output_results();
@@ -312,13 +417,19 @@ namespace fvfsi
     summary.set_result("solid_cells", solid_fv->n_global_cells());
     summary.set_result("time_steps", result.n_time_steps);
     summary.set_result("coupling_iterations", result.total_coupling_iterations);
+    summary.set_result("coupled_time_steps", result.n_coupled_steps);
+    summary.set_result("mean_coupling_iterations_per_step", result.mean_coupling_iterations());
     summary.set_result("max_coupling_iterations_per_step", result.max_coupling_iterations);
     summary.set_result("min_cell_volume_ratio", result.min_volume_ratio);
-    if (!fluid_scene_parameters.force_patches.empty() && !history_drag.empty())
+    summary.set_result("solid_outer_iterations", result.solid_outer_iterations);
+    summary.set_result("coupled_wall_seconds", result.coupled_wall_seconds);
+    if (!fluid_scene_parameters.force_patches.empty() && last_force)
     {
-      summary.set_result("drag", history_drag.back());
-      summary.set_result("lift", history_lift.back());
+      summary.set_result("drag", (*last_force)[0]);
+      summary.set_result("lift", (*last_force)[1]);
     }
+    if (steady)
+      summary.set_result("fluid_pseudo_steps", fluid->pseudo_steps());
     for (unsigned int i = 0; i < probes.size(); ++i)
     {
       const Tensor<1, dim> u = solid_probe(i);

@@ -12,79 +12,18 @@
 //     (new b) in at most 4 iterations.
 // Iteration counts are printed: integers, the same on every machine up to round-off in the
 // last iterations (numdiff compares them exactly; a change means the algorithm changed).
-#include <fvfsi/coupling/coupling_acceleration.h>
-
 #include "../test_utilities.h"
-
-#include <cmath>
-#include <vector>
+#include "linear_interface_model.h"
 
 using namespace fvfsi_test;
 
 constexpr unsigned int n = 20;
 
-/// A = Q diag(lambda) Q^T with Q a Householder reflection I - 2 v v^T / v.v.
-struct Model
-{
-  std::vector<double> lambda, v;
-  Model()
-  {
-    for (unsigned int i = 0; i < n; ++i)
-    {
-      lambda.push_back(-3 + 3.5 * i / (n - 1));
-      v.push_back(std::sin(1.0 + i) + 0.3);
-    }
-  }
-  std::vector<double> reflect(const std::vector<double>& x) const
-  {
-    double vx = 0, vv = 0;
-    for (unsigned int i = 0; i < n; ++i)
-    {
-      vx += v[i] * x[i];
-      vv += v[i] * v[i];
-    }
-    std::vector<double> y = x;
-    for (unsigned int i = 0; i < n; ++i)
-      y[i] -= 2 * vx / vv * v[i];
-    return y;
-  }
-  std::vector<double> solid_answer(const std::vector<double>& d, const std::vector<double>& b) const
-  {
-    std::vector<double> y = reflect(d);
-    for (unsigned int i = 0; i < n; ++i)
-      y[i] *= lambda[i];
-    y = reflect(y);
-    for (unsigned int i = 0; i < n; ++i)
-      y[i] += b[i];
-    return y;
-  }
-};
-
-/// Iterations to converge, or 0 if not within 400 (or diverged).
-unsigned int solve(fvfsi::CouplingAcceleration& acceleration, const Model& model,
-                   const std::vector<double>& b, std::vector<double>& d)
-{
-  acceleration.new_time_step();
-  for (unsigned int k = 1; k <= 400; ++k)
-  {
-    const std::vector<double> d_tilde = model.solid_answer(d, b);
-    const fvfsi::InterfaceVector next =
-      acceleration.next(fvfsi::InterfaceVector(d.begin(), d.end()),
-                        fvfsi::InterfaceVector(d_tilde.begin(), d_tilde.end()));
-    d.assign(next.begin(), next.end());
-    if (acceleration.relative_residual() <= 1e-10)
-      return k;
-    if (!(acceleration.relative_residual() < 1e6))
-      return 0;
-  }
-  return 0;
-}
-
 int main(int argc, char** argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream out = open_output();
-  const Model model;
+  const LinearInterfaceModel model(n);
   std::vector<double> b1(n), b2(n);
   for (unsigned int i = 0; i < n; ++i)
   {
@@ -95,9 +34,8 @@ int main(int argc, char** argv)
                               const unsigned int reuse, const bool second_step)
   {
     fvfsi::CouplingParameters p;
-    for (const auto& [name, m] : fvfsi::CouplingParameters::method_names)
-      if (name == method)
-        p.method = m;
+    p.method = method_named(method);
+    p.tolerance = 1e-10;
     p.relaxation = omega;
     p.reuse_time_steps = reuse;
     fvfsi::CouplingAcceleration acceleration(p);

@@ -10,7 +10,9 @@
 //   - Aitken converges as well, to the same d within 0.1%; fixed relaxation (omega = 0.4)
 //     converges but needs more than 3 times the iterations of IQN-ILS and of Aitken;
 //   - plain Gauss-Seidel (fixed, omega = 1) diverges and stops with an error that names the time
-//     step (no NaN left unreported).
+//     step (no NaN left unreported);
+//   - IQN-IMVJ converges to the same d within 0.1%, with its dense J (the interface is 4 faces
+//     wide) and with the implicit J of the last 8 time steps (IMVJ dense limit = 0).
 // Only verdicts are printed (iteration counts go to stdout), so the np = 1 and np = 2 outputs are
 // one file; with np = 2 the fluid and the solid are decomposed independently, and the interface
 // gathered on both ranks.
@@ -31,11 +33,12 @@ struct Outcome
   std::string error;
 };
 
-Outcome run(const std::string& method, const std::string& relaxation)
+Outcome run(const std::string& method, const std::string& relaxation,
+            const std::string& extra = "Coupling/Max iterations=100")
 {
-  const auto p = shipped_case(
-    "fsi_pressure_column",
-    {"Coupling/Method=" + method, "Coupling/Relaxation=" + relaxation, "Output directory=out"});
+  const auto p = shipped_case("fsi_pressure_column",
+                              {"Coupling/Method=" + method, "Coupling/Relaxation=" + relaxation,
+                               "Output directory=out", extra});
   std::filesystem::create_directories("out");
   Outcome o;
   try
@@ -49,8 +52,8 @@ Outcome run(const std::string& method, const std::string& relaxation)
   {
     o.error = e.what();
   }
-  std::printf("%s omega %s: d = %.7e m, %u coupling iterations%s%s\n", method.c_str(),
-              relaxation.c_str(), o.d, o.iterations,
+  std::printf("%s omega %s (%s): d = %.7e m, %u coupling iterations%s%s\n", method.c_str(),
+              relaxation.c_str(), extra.c_str(), o.d, o.iterations,
               o.error.empty() ? "" : ", error: ", o.error.c_str());
   return o;
 }
@@ -61,7 +64,9 @@ int main(int argc, char** argv)
   std::ofstream out = open_output();
   const double exact = 5000 / (1e7 * 0.7 / (1.3 * 0.4) - 5000);
   const Outcome iqn = run("IQN-ILS", "0.4"), aitken = run("Aitken", "0.4"),
-                fixed = run("fixed", "0.4"), gauss_seidel = run("fixed", "1");
+                fixed = run("fixed", "0.4"), gauss_seidel = run("fixed", "1"),
+                imvj = run("IQN-IMVJ", "0.4"),
+                imvj_implicit = run("IQN-IMVJ", "0.4", "Coupling/IMVJ dense limit=0");
   const auto close = [&](const Outcome& o)
   { return o.error.empty() && std::abs(o.d - exact) < 1e-3 * exact; };
   out << "IQN-ILS: interface displacement within 0.1% of the static solution: "
@@ -73,4 +78,6 @@ int main(int argc, char** argv)
       << "\n";
   out << "Gauss-Seidel (omega = 1): stops with an error naming the time step: "
       << yes_no(gauss_seidel.error.find("time step") != std::string::npos) << "\n";
+  out << "IQN-IMVJ: within 0.1%: " << yes_no(close(imvj))
+      << "; with the implicit J (IMVJ dense limit = 0): " << yes_no(close(imvj_implicit)) << "\n";
 }

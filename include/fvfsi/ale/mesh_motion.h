@@ -91,7 +91,7 @@ namespace fvfsi
 
     /// The vertices (triangulation indices) of a moving patch that this rank's cells touch: the
     /// entries set_patch_displacement reads.
-    std::vector<unsigned int> patch_vertices(const std::string& patch);
+    const std::vector<unsigned int>& patch_vertices(const std::string& patch);
 
     /// Laplace: set the displacement [m] of the vertices of a moving patch from outside (e.g. the
     /// solid's interface displacement), replacing the patch's expression from then on. Indexed
@@ -125,6 +125,7 @@ namespace fvfsi
       unsigned int id;
       std::unique_ptr<dealii::FunctionParser<dim>> expression; ///< null when set from outside
       std::vector<dealii::Tensor<1, dim>> given; ///< per vertex, when set from outside
+      std::vector<unsigned int> vertices; ///< the patch's vertices of this rank's cells, sorted
     };
     std::vector<MovingPatch> moving;
     MovingPatch& moving_patch(const std::string& name);

@@ -115,13 +115,15 @@ namespace fvfsi
 
     /// The driver has moved the mesh for the coming time step (FVGeometry::reinit) and passes
     /// the volumes the faces swept, FVGeometry::swept_volumes() of that motion [m^dim]. The next
-    /// solve builds the mesh fluxes from them. Transient runs only; a step without a call is a
-    /// step without motion.
+    /// solve builds the mesh fluxes from them; a step without a call is a step without motion.
+    /// Steady: the mesh is at rest in its new position (no mesh flux).
     void move_mesh(const std::vector<double>& swept_volume);
 
     /// Steady: pseudo time steps until the relative change is below the steady tolerance.
     /// Returns the number of pseudo steps.
     unsigned int solve_steady();
+    /// Steady: pseudo time steps of all solves so far.
+    unsigned int pseudo_steps() const { return pseudo_step; }
 
     const FluidParameters& parameters() const { return prm; }
 
@@ -198,7 +200,13 @@ namespace fvfsi
     /// F_f^mesh of the current time step from the swept volumes.
     void compute_mesh_fluxes();
     /// r1_f = (V^o / V)_f and r2_f = (V^oo / V)_f, interpolated linearly (1 on a fixed mesh).
-    std::array<double, 2> volume_ratios(unsigned int f) const;
+    const std::array<double, 2>& volume_ratios(unsigned int f) const
+    {
+      return face_volume_ratio[f];
+    }
+    /// Recompute face_volume_ratio (after the geometry or the time levels change).
+    void update_volume_ratios();
+    std::vector<std::array<double, 2>> face_volume_ratio;
     /// True when the preconditioners are to be rebuilt (every `Preconditioner update interval`
     /// time steps; in between, the matrices change a little and the old ones still work).
     bool refresh_preconditioners() const
@@ -218,6 +226,11 @@ namespace fvfsi
 
     FaceConditions<dim, Type> conditions; ///< per boundary face
     dealii::FunctionParser<dim> body_force;
+    /// g at the owned cell centres at the current time (evaluate_body_force()).
+    std::array<std::vector<double>, dim> body_force_value;
+    /// The body force once per time step (a FunctionParser evaluation per cell and PISO
+    /// assembly was about 2% of a step).
+    void evaluate_body_force();
     bool pressure_level_fixed = false; ///< true if some outlet fixes p; else a reference cell
     ScalarBoundaryConditions<dim> velocity_bc, pressure_bc;
     FaceVector nu_f; ///< nu per face (Gamma of the viscous Laplacian)

@@ -31,7 +31,8 @@ namespace fvfsi
     /// the orthogonal part of a diffusion term with a = Gamma_f S_f / d_fn (Eqs 19, 27).
     void add_face_diffusion(unsigned int f, double a);
 
-    /// Write the coefficients into `matrix` (sparsity from Laplacian::reinit_matrix), row by row.
+    /// Write the coefficients into `matrix` (sparsity from Laplacian::reinit_matrix): the first
+    /// time row by row, later straight into its rows (the layout is kept; reinit() forgets it).
     void copy_to(dealii::TrilinosWrappers::SparseMatrix& matrix) const;
 
     /// y_P = sum_N a_PN x_N for every owned cell P (x with up-to-date ghosts).
@@ -42,6 +43,13 @@ namespace fvfsi
     std::vector<double> lower;    ///< per face: a_NP (interior faces)
 
   private:
+    /// copy_to() through matrix.set(), row by row; records the layout.
+    void set_rows(dealii::TrilinosWrappers::SparseMatrix& matrix) const;
+
     const FVGeometry<dim>& geometry;
+    /// Per stored entry of the owned rows of `layout_of`, in its order: -1 the diagonal, 2 f
+    /// upper[f], 2 f + 1 lower[f].
+    mutable std::vector<int> entry_source;
+    mutable const dealii::TrilinosWrappers::SparseMatrix* layout_of = nullptr;
   };
 } // namespace fvfsi

@@ -18,6 +18,8 @@ namespace fvfsi
   void update_ghost_boundary_faces(const FVGeometry<dim>& geometry, std::vector<T>& values)
   {
     static_assert(std::is_trivially_copyable_v<T> && sizeof(T) % sizeof(double) == 0);
+    if (dealii::Utilities::MPI::n_mpi_processes(geometry.comm()) == 1)
+      return; // no ghost cells
     constexpr unsigned int n = sizeof(T) / sizeof(double);
     using Cell = typename FVGeometry<dim>::active_cell_iterator;
     const auto local = [&geometry](const Cell& cell)

@@ -7,14 +7,17 @@
 //   correction = sum_k c_k dX_k,   c = argmin | r + sum_k c_k dR_k |_2,
 //
 // the least-squares inverse Jacobian applied to -r. IQN-ILS adds it to the solid's answer d~,
-// Anderson to the fixed-point image G(x).
+// Anderson to the fixed-point image G(x); IQN-IMVJ also takes the fitted part sum_k c_k dR_k
+// (its inverse Jacobian of earlier time steps acts on the rest of r) and, at the end of a time
+// step, the kept columns with the pseudo-inverse of [dR_k] (kept_secants(), for its update).
 //
 // The least-squares problem is solved by deal.II's ImplicitQR on the columns themselves (any
 // vector type with dot products: the interface's replicated dealii::Vector, or the solid's
 // distributed vectors, whose dots are MPI sums). Columns are taken newest first, and one whose
 // part orthogonal to the newer ones is at most `filter` times its norm is left out (the QR filter
 // of IQN methods: after a few iterations of a converging step old columns become nearly
-// dependent on new ones, and kept, they amplify round-off into the update).
+// dependent on new ones, and kept, they amplify round-off into the update). The coupling's
+// filter is `Coupling/QR filter` (default 1e-2), the solid's Anderson acceleration uses 1e-5.
 
 #include <deal.II/lac/qr.h>
 #include <deal.II/lac/vector.h>
@@ -30,6 +33,7 @@ namespace fvfsi
   public:
     /// `filter` as above (0: keep every column that is not exactly dependent).
     explicit LeastSquaresModel(const double filter = 0) : filter(filter) {}
+    void set_filter(const double f) { filter = f; }
 
     /// Add the newest pair of columns; `tag` marks them (e.g. with their time step).
     void add_column(const VectorType& dR, const VectorType& dX, const unsigned int tag = 0)
@@ -52,10 +56,72 @@ namespace fvfsi
     unsigned int n_used() const { return used; }
 
     /// `result` (sized like r) = sum_k c_k dX_k with c = argmin |r + sum_k c_k dR_k|; false
-    /// (result untouched) if no column is usable.
-    bool correction(const VectorType& r, VectorType& result) const
+    /// (result untouched) if no column is usable. With `fitted`, also fitted = sum_k c_k dR_k
+    /// (r + fitted is the part of r the columns do not explain; IQN-IMVJ applies its inverse
+    /// Jacobian of earlier time steps to it).
+    bool correction(const VectorType& r, VectorType& result, VectorType* fitted = nullptr) const
     {
       dealii::ImplicitQR<VectorType> qr;
+      const std::vector<const Columns*> kept = factorize(qr);
+      if (kept.empty())
+        return false;
+      // c = -R^-1 Q^T r with Q^T r = R^-T A^T r (A = [dR_k], R its QR factor).
+      dealii::Vector<double> ATr(used), QTr(used), c(used);
+      qr.multiply_with_AT(ATr, r);
+      qr.solve(QTr, ATr, /*transpose=*/true);
+      qr.solve(c, QTr);
+      result = 0;
+      if (fitted)
+        *fitted = 0;
+      for (unsigned int k = 0; k < used; ++k)
+      {
+        result.add(-c(k), kept[k]->dX);
+        if (fitted)
+          fitted->add(-c(k), kept[k]->dR);
+      }
+      return true;
+    }
+
+    /// The columns the filter keeps (newest first) and the pseudo-inverse of V = [dR_k]:
+    /// V^+ x = (Z_k . x)_k with [Z_k] = V (V^T V)^-1 = V R^-1 R^-T.
+    struct Secants
+    {
+      std::vector<VectorType> dR, dX, Z;
+    };
+    Secants kept_secants() const
+    {
+      dealii::ImplicitQR<VectorType> qr;
+      const std::vector<const Columns*> kept = factorize(qr);
+      Secants s;
+      dealii::Vector<double> e(used), y(used), g(used);
+      for (unsigned int i = 0; i < used; ++i)
+      {
+        s.dR.push_back(kept[i]->dR);
+        s.dX.push_back(kept[i]->dX);
+        // Column i of (R^T R)^-1: R^T y = e_i, R g = y.
+        e = 0;
+        e(i) = 1;
+        qr.solve(y, e, /*transpose=*/true);
+        qr.solve(g, y);
+        VectorType z = kept[i]->dR;
+        z = 0;
+        for (unsigned int k = 0; k < used; ++k)
+          z.add(g(k), kept[k]->dR);
+        s.Z.push_back(z);
+      }
+      return s;
+    }
+
+  private:
+    struct Columns
+    {
+      VectorType dR, dX;
+      unsigned int tag;
+    };
+    /// Append the columns newest first to `qr`, leaving out the ones the filter rejects; the
+    /// kept ones, in the order of qr's columns (sets `used`).
+    std::vector<const Columns*> factorize(dealii::ImplicitQR<VectorType>& qr) const
+    {
       const double filter2 = filter * filter;
       qr.connect_append_column_slot(
         [filter2](const dealii::Vector<double>&, const double& rho2, const double& norm2)
@@ -65,25 +131,9 @@ namespace fvfsi
         if (column.dR.l2_norm() > 0 && qr.append_column(column.dR))
           kept.push_back(&column);
       used = kept.size();
-      if (kept.empty())
-        return false;
-      // c = -R^-1 Q^T r with Q^T r = R^-T A^T r (A = [dR_k], R its QR factor).
-      dealii::Vector<double> ATr(used), QTr(used), c(used);
-      qr.multiply_with_AT(ATr, r);
-      qr.solve(QTr, ATr, /*transpose=*/true);
-      qr.solve(c, QTr);
-      result = 0;
-      for (unsigned int k = 0; k < used; ++k)
-        result.add(-c(k), kept[k]->dX);
-      return true;
+      return kept;
     }
 
-  private:
-    struct Columns
-    {
-      VectorType dR, dX;
-      unsigned int tag;
-    };
     double filter;
     std::deque<Columns> columns;
     mutable unsigned int used = 0;

@@ -7,9 +7,11 @@
 //   2. iterate: move the fluid mesh (Laplace mesh motion with the interface vertices at d), solve
 //      the fluid, transfer its wall tractions to the solid faces (Eqs 32-33), solve the solid,
 //      transfer its vertex displacements to the fluid interface vertices (3.5.2), and update d
-//      from the residual r = d~ - d (Eq. 30) by fixed relaxation, Aitken or IQN-ILS, until
-//      |r| <= tolerance |d~|;
+//      from the residual r = d~ - d (Eq. 30) by fixed relaxation, Aitken, IQN-ILS or IQN-IMVJ,
+//      until |r| <= tolerance |d~| (or, optionally, |r| <= reduction x the step's largest |r|);
 //   3. both solvers accept the step.
+// Steady (Fluid/Transient = Solid/Transient = false): step 2 alone converges the steady coupled
+// state, each iteration solving the steady fluid and the static solid (solve_steady()).
 // solve_time_step() in fsi_scene.cc is this list, line by line.
 //
 // The fluid and the solid have their own meshes (`Mesh` and `Solid mesh`), decomposed
@@ -37,6 +39,7 @@
 #include <fvfsi/solid/solid_solver.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,8 +56,15 @@ namespace fvfsi
   struct FsiResults
   {
     unsigned int n_time_steps = 0;
+    unsigned int n_coupled_steps = 0; ///< from Coupling/Start time on
     unsigned int total_coupling_iterations = 0, max_coupling_iterations = 0;
-    double min_volume_ratio = 1; ///< min over cells and steps of V_P / V_P(reference), fluid
+    unsigned long solid_outer_iterations = 0; ///< over all coupling iterations
+    double mean_coupling_iterations() const
+    {
+      return n_coupled_steps == 0 ? 0 : double(total_coupling_iterations) / n_coupled_steps;
+    }
+    double min_volume_ratio = 1;     ///< min over cells and steps of V_P / V_P(reference), fluid
+    double coupled_wall_seconds = 0; ///< wall time of the coupled time steps [s]
   };
 
   /// The parameters an FSI scene reads.
@@ -94,6 +104,14 @@ namespace fvfsi
     void make_output();
     /// One time step of Algorithm 1; returns the coupling iterations.
     unsigned int solve_time_step();
+    /// Step 2 of Algorithm 1: coupling iterations from d until the interface residual is below
+    /// the tolerance; returns their number (d is then the accepted displacement).
+    unsigned int converge_interface();
+    /// Steady FSI (Fluid/Transient = Solid/Transient = false): the coupling iterations converge
+    /// the steady coupled state, steady fluid and static solid in each; returns their number.
+    unsigned int solve_steady();
+    /// "time step N (t = ...)" or "the steady coupled solve", for messages.
+    std::string step_name() const;
     /// Steps 2a-2e of Algorithm 1 for the displacement d; returns the solid's answer d~.
     InterfaceVector coupling_iteration(const InterfaceVector& d);
     /// Move the fluid mesh so that its interface vertices sit at reference + d.
@@ -103,6 +121,10 @@ namespace fvfsi
     /// Solid vertex displacements -> fluid interface vertices (zone numbering).
     InterfaceVector solid_interface_displacement() const;
     void record_time_history(unsigned int iterations, double residual);
+    /// Steady: one line of fsi_steady_history.txt and a progress line per coupling iteration.
+    void record_steady_iteration(unsigned int k, double residual);
+    /// The fluid's force on the Fluid scene/Force patches [N] (per unit depth in 2D).
+    dealii::Tensor<1, dim> fluid_force() const;
     void output_results() const;
 
     MPI_Comm comm;
@@ -113,6 +135,7 @@ namespace fvfsi
     SolidSceneParameters solid_scene_parameters;
     FsiSceneParameters prm;
     std::string prm_directory, output_directory;
+    const bool steady; ///< steady FSI: Fluid/Transient = false
     dealii::ConditionalOStream pcout;
     /// Wall time per part of Algorithm 1 (printed at the end, summary.json `timing`).
     mutable dealii::TimerOutput timer;
@@ -134,7 +157,8 @@ namespace fvfsi
     std::vector<dealii::Point<dim>> vertices_old; ///< fluid vertex positions at t^n
     /// Interface displacement at the fluid interface vertices at t^(n+1), t^n, t^(n-1) [m].
     InterfaceVector d, d_old, d_older;
-    std::vector<double> history_t, history_drag, history_lift;
+    std::optional<dealii::Tensor<1, dim>> last_force; ///< fluid_force() of the last record
+    double volume_ratio = 1; ///< min over the fluid cells of V_P / V_P(reference), now
     FsiResults result;
   };
 } // namespace fvfsi

@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# (fvfsi copy of ../shared/peers/openfoam-cfd3/cost.sh with the parameter names of subsection Time;
+# the mesh and inflow tools and the OpenFOAM case template stay in the peer folder, PEER=...)
+# Cost of a PISO time step, side by side: OpenFOAM's pimpleFoam and fvfsi on the Turek-Hron CFD3 channel
+# (rigid cylinder and flag, Re = 200, full parabolic inflow from rest, no ramp), same dt, same step count,
+# similar cell counts (pimpleFoam: one-cell-thick blockMesh, 20 280 cells; fvfsi: its n = 40 channel,
+# 20 960 cells). Prints wall seconds and microseconds per cell and time step for each, and their ratio.
+#
+#   usage (from the project root): cost.sh FVFSI_EXECUTABLE [STEPS=400] [DT=0.00025] [REPEATS=3]
+#   needs: apt-get install -y openfoam python3-numpy   (OpenFOAM v1912 from Debian)
+# pimpleFoam settings: PISO (1 outer, 2 pressure correctors, 1 non-orthogonal corrector), backward,
+# Gauss linearUpwind, GAMG for p (relTol 0.01, final 0, tolerance 1e-7), symGaussSeidel for U (1e-8).
+# fvfsi runs prm/turek_hron_cfd3.prm with the mesh, dt, end time and inflow overridden (edit FVFSI_ARGS
+# below if the parameter names change).
+set -euo pipefail
+HERE=${PEER:-$(cd "$(dirname "$0")/../../../shared/peers/openfoam-cfd3" && pwd)}
+FV=${1:?usage: cost.sh FVFSI_EXECUTABLE [STEPS] [DT] [REPEATS]}
+STEPS=${2:-400}; DT=${3:-0.00025}; REPEATS=${4:-3}
+PRM=${PRM:-$(pwd)/prm/turek_hron_cfd3.prm}   # run from the project root, or set PRM
+END=$(python3 -c "print($STEPS*$DT)")
+WORK=${WORK:-$(mktemp -d)}
+export WM_PROJECT_DIR=/usr/share/openfoam OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+PY=/usr/bin/python3
+C=$WORK/of
+mkdir -p "$C/system"
+cp -r "$HERE/template/constant" "$C/"; cp -r "$HERE/template/0" "$C/0"
+cp "$HERE/template/system/fvSchemes.transient" "$C/system/fvSchemes"
+cp "$HERE/template/system/fvSolution.transient" "$C/system/fvSolution"
+cat > "$C/system/controlDict" <<EOD
+FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
+application pimpleFoam; startFrom startTime; startTime 0; stopAt endTime; endTime $END; deltaT $DT;
+writeControl timeStep; writeInterval 100000; purgeWrite 0; writeFormat ascii; writePrecision 12;
+writeCompression off; timeFormat general; timePrecision 10; runTimeModifiable false;
+EOD
+$PY "$HERE/gen_mesh.py" 1 "$C/system/blockMeshDict" > "$C/log.gen_mesh"
+(cd "$C" && blockMesh > log.blockMesh 2>&1 && checkMesh > log.checkMesh 2>&1)
+$PY "$HERE/set_inlet.py" "$C" 2.0 0 > "$C/log.set_inlet"
+of_cells=$(grep -m1 "^ *cells:" "$C/log.checkMesh" | awk '{print $2}')
+FVFSI_ARGS=(--set "Mesh/Generator arguments=40" --set "Time/End time=$END" --set "Time/Time step=$DT"
+            --set "Fluid/Velocity inlet=inlet: 1.5*2*4*y*(0.41-y)/0.41^2; 0"
+            --set "Fluid scene/Output interval=0" --set "Output directory=$WORK/fv")
+now() { date +%s.%N; }
+of_t=(); fv_t=()
+for r in $(seq "$REPEATS"); do            # alternate the two, so that a drift of the machine hits both
+  rm -rf "$C"/[1-9]* "$C"/0.[0-9]* "$C/postProcessing"
+  s=$(now); (cd "$C" && pimpleFoam > log.pimpleFoam 2>&1); of_t+=($(echo "$(now) - $s" | bc))
+  s=$(now); "$FV" "$PRM" "${FVFSI_ARGS[@]}" > "$WORK/fv.log" 2>&1; fv_t+=($(echo "$(now) - $s" | bc))
+done
+fv_cells=$($PY -c "import json;print(json.load(open('$WORK/fv/summary.json'))['n_cells'])")
+$PY - "$of_cells" "$fv_cells" "$STEPS" "${of_t[*]}" "${fv_t[*]}" <<'EOP'
+import sys, statistics as st
+ofc, fvc, n = int(sys.argv[1]), int(sys.argv[2]), int(sys.argv[3])
+of = [float(x) for x in sys.argv[4].split()]; fv = [float(x) for x in sys.argv[5].split()]
+ratios = [(b / fvc) / (a / ofc) for a, b in zip(of, fv)]
+print(f"pimpleFoam: {ofc} cells, {n} steps, wall s {['%.2f' % x for x in of]}, median {st.median(of):.2f} s, "
+      f"{st.median(of) / (ofc * n) * 1e6:.3f} us per cell-step")
+print(f"fvfsi:      {fvc} cells, {n} steps, wall s {['%.2f' % x for x in fv]}, median {st.median(fv):.2f} s, "
+      f"{st.median(fv) / (fvc * n) * 1e6:.3f} us per cell-step")
+print(f"fvfsi / pimpleFoam cost per cell-step, pair by pair: {['%.3f' % r for r in ratios]}, median {st.median(ratios):.3f}")
+EOP

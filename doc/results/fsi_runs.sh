@@ -1,0 +1,25 @@
+# Shared by doc/results/fsi3.sh and fsi2.sh (sourced): one Turek-Hron FSI run and its record.
+#   run_fsi CASE NAME T0 T1 [SET...]
+# runs prm/turek_hron_CASE.prm with the --set overrides SET into $runs/NAME (unless
+# $runs/NAME/summary.json exists already: a study can be resumed), then writes $runs/NAME.json
+# (doc/results/fsi_benchmark.py record: statistics over [T0, T1], errors, cost) and
+# $runs/NAME.png. Needs $fvfsi, $runs and $python.
+run_fsi() {
+  local case=$1 name=$2 t0=$3 t1=$4
+  shift 4
+  local out=$runs/$name args=()
+  for s in "$@"; do args+=(--set "$s"); done
+  if [[ ! -f $out/summary.json ]]; then
+    echo "$(date -u +%H:%M) $case $name: running (log $out.log)"
+    "$fvfsi" "prm/turek_hron_$case.prm" "${args[@]}" --set "Fluid scene/Output interval=0" \
+      --set "Output directory=$out" > "$out.log" 2>&1 || { echo "$case $name failed, see $out.log"; return 1; }
+  fi
+  "$python" doc/results/fsi_benchmark.py record "$case" "$out" "$t0" "$t1" \
+    "prm/turek_hron_$case.prm" "$@" > "$out.json"
+  "$python" doc/results/fsi_benchmark.py plot "$case" "$out.png" "$out" "$t0" "$t1"
+}
+
+# The machine, for the record.
+machine() {
+  echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load: $(cut -d' ' -f1-3 /proc/loadavg); commit $(git rev-parse --short HEAD)"
+}
