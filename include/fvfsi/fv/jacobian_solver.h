@@ -49,8 +49,7 @@ namespace fvfsi
     /// matrix x = b (x: start value for GMRES). Returns the Krylov iterations (0: direct).
     /// `reduction` >= 0 replaces the parameters' Residual reduction for this solve. Throws a
     /// std::runtime_error naming `what` if GMRES does not converge.
-    unsigned int solve(Vector& x, const Vector& b, const std::string& what,
-                       double reduction = -1);
+    unsigned int solve(Vector& x, const Vector& b, const std::string& what, double reduction = -1);
 
   private:
     JacobianSolverParameters parameters;
