@@ -75,72 +75,65 @@ def cantilever():
         print("| " + " | ".join(row) + " |")
 
 
-def steady(names):
-    print("| case | algorithm | iterations | u_x(A) [m] | error | u_y(A) [m] | error | wall [s] |")
-    print("|---|---|---:|---:|---:|---:|---:|---:|")
+def table(header, names, row):
+    """A markdown table: `header` (its first columns case and algorithm), then per
+    (case, algorithm, NAME) the cells row(summaries) of the runs of NAME, or why there are none."""
+    print("| " + " | ".join(header) + " |")
+    print("|---|---|" + "---:|" * (len(header) - 2))
     for case, algorithm, name in names:
         summaries, rc, log = runs(name)
-        if not summaries:
-            print(f"| {case} | {algorithm} | {failure(rc, log)} | | | | | |")
-            continue
-        res = summaries[0]["results"]
-        a = res.get("point_A_displacement")
-        cells = (f"{a[0]:.4e} | {100 * (a[0] / CSM1_A[0] - 1):+.2f}% | {a[1]:.4e} | "
-                 f"{100 * (a[1] / CSM1_A[1] - 1):+.2f}%") if a else " | | | "
-        print(f"| {case} | {algorithm} | {res['outer_iterations']} | {cells} | {wall(summaries)} |")
+        cells = row(summaries) if summaries else [failure(rc, log)] + [""] * (len(header) - 3)
+        print(f"| {case} | {algorithm} | " + " | ".join(cells) + " |")
 
 
-def timed(names):
-    print("| case | algorithm | cells | time steps | iterations | result | wall [s] |")
-    print("|---|---|---:|---:|---:|---|---:|")
-    for case, algorithm, name in names:
-        summaries, rc, log = runs(name)
-        if not summaries:
-            print(f"| {case} | {algorithm} | | | {failure(rc, log)} | | |")
-            continue
-        s = summaries[0]
-        res = s["results"]
-        if "point_A_displacement" in res:
-            result = "u(A) = ({:.5e}, {:.5e}) m".format(*res["point_A_displacement"])
-        else:
-            result = f"max displacement error {res['max_displacement_error']:.4e} m"
-        print(f"| {case} | {algorithm} | {s['n_cells']} | {res['time_steps']} | "
-              f"{res['outer_iterations']} | {result} | {wall(summaries)} |")
+def steady_row(summaries):
+    res = summaries[0]["results"]
+    a = res["point_A_displacement"]
+    return [str(res["outer_iterations"]), f"{a[0]:.4e}", f"{100 * (a[0] / CSM1_A[0] - 1):+.2f}%",
+            f"{a[1]:.4e}", f"{100 * (a[1] / CSM1_A[1] - 1):+.2f}%", wall(summaries)]
 
 
-def fsi(names):
-    print("| case | solid algorithm | coupled steps | coupling its | solid its per coupling it |"
-          " solid [s] | solid per coupling it [ms] | solid share of coupled steps | fluid [s] |"
-          " mesh motion [s] | wall [s] | u(A) [m] |")
-    print("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|")
-    for case, algorithm, name in names:
-        summaries, rc, log = runs(name)
-        if not summaries:
-            print(f"| {case} | {algorithm} | {failure(rc, log)} |" + " |" * 10)
-            continue
-        s = summaries[0]
-        res, t = s["results"], s["timing"]
-        k = res["coupling_iterations"]
-        print(f"| {case} | {algorithm} | {res['coupled_time_steps']} | {k} | "
-              f"{res['solid_outer_iterations'] / k:.1f} | {t['solid']:.2f} | "
-              f"{1000 * t['solid'] / k:.1f} | {100 * t['solid'] / res['coupled_wall_seconds']:.1f}% | "
-              f"{t['fluid']:.1f} | {t['mesh motion']:.1f} | {wall(summaries)} | "
-              "({:.5e}, {:.5e}) |".format(*res["point_A_displacement"]))
+def timed_row(summaries):
+    s = summaries[0]
+    res = s["results"]
+    if "point_A_displacement" in res:
+        result = "u(A) = ({:.5e}, {:.5e}) m".format(*res["point_A_displacement"])
+    else:
+        result = f"max displacement error {res['max_displacement_error']:.4e} m"
+    return [str(res["outer_iterations"]), str(s["n_cells"]), str(res["time_steps"]), result,
+            wall(summaries)]
+
+
+def fsi_row(summaries):
+    s = summaries[0]
+    res, t = s["results"], s["timing"]
+    k = res["coupling_iterations"]
+    return [str(res["coupled_time_steps"]), str(k), f"{res['solid_outer_iterations'] / k:.1f}",
+            f"{t['solid']:.2f}", f"{1000 * t['solid'] / k:.1f}",
+            f"{100 * t['solid'] / res['coupled_wall_seconds']:.1f}%", f"{t['fluid']:.1f}",
+            f"{t['mesh motion']:.1f}", wall(summaries),
+            "({:.5e}, {:.5e})".format(*res["point_A_displacement"])]
 
 
 print("## Cantilever\n")
 cantilever()
 print("\n## CSM1\n")
-steady([("CSM1 280 x 16", "coupled", "csm1_coupled"),
-        ("CSM1 280 x 16", "coupled, Jacobian-free", "csm1_coupled_jfnk"),
-        ("CSM1 280 x 16", "segregated", "csm1_segregated")])
+table(["case", "algorithm", "iterations", "u_x(A) [m]", "error", "u_y(A) [m]", "error",
+       "wall [s]"],
+      [("CSM1 280 x 16", "coupled", "csm1_coupled"),
+       ("CSM1 280 x 16", "coupled, Jacobian-free", "csm1_coupled_jfnk"),
+       ("CSM1 280 x 16", "segregated", "csm1_segregated")], steady_row)
 print("\n## CSM3 (first second) and plate with a hole\n")
-timed([("CSM3 120 x 4, t <= 1 s", "coupled", "csm3_coupled"),
+table(["case", "algorithm", "iterations", "cells", "time steps", "result", "wall [s]"],
+      [("CSM3 120 x 4, t <= 1 s", "coupled", "csm3_coupled"),
        ("CSM3 120 x 4, t <= 1 s", "segregated", "csm3_segregated"),
        ("plate with a hole, n = 179", "coupled", "plate_hole_64k_coupled"),
-       ("plate with a hole, n = 179", "segregated", "plate_hole_64k_segregated")])
+       ("plate with a hole, n = 179", "segregated", "plate_hole_64k_segregated")], timed_row)
 print("\n## FSI\n")
-fsi([("FSI3, dt = 0.75 ms", "segregated", "fsi3_segregated"),
-     ("FSI3, dt = 0.75 ms", "coupled", "fsi3_coupled"),
-     ("quasi-steady flag, dt = 10 ms", "segregated", "fsi1_dt10ms_segregated"),
-     ("quasi-steady flag, dt = 10 ms", "coupled", "fsi1_dt10ms_coupled")])
+table(["case", "solid algorithm", "coupled steps", "coupling its", "solid its per coupling it",
+       "solid [s]", "solid per coupling it [ms]", "solid share of coupled steps", "fluid [s]",
+       "mesh motion [s]", "wall [s]", "u(A) [m]"],
+      [("FSI3, dt = 0.75 ms", "segregated", "fsi3_segregated"),
+       ("FSI3, dt = 0.75 ms", "coupled", "fsi3_coupled"),
+       ("quasi-steady flag, dt = 10 ms", "segregated", "fsi1_dt10ms_segregated"),
+       ("quasi-steady flag, dt = 10 ms", "coupled", "fsi1_dt10ms_coupled")], fsi_row)
