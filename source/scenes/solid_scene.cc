@@ -167,6 +167,13 @@ namespace fvfsi
       summary.set_result("point_" + name + "_displacement",
                          std::vector<double>(&u[0], &u[0] + dim));
     summary.set_result("outer_iterations", result.total_outer_iterations);
+    if (solid_parameters.algorithm == SolidParameters::Algorithm::coupled)
+    {
+      // outer_iterations are Newton iterations here
+      summary.set_result("jacobian_assemblies", double(solid->jacobian_assemblies()));
+      summary.set_result("residual_evaluations", double(solid->residual_evaluations()));
+      summary.set_result("krylov_iterations", double(solid->krylov_iterations()));
+    }
     summary.set_result("time_steps", result.n_time_steps);
   }
 

@@ -58,10 +58,10 @@ namespace fvfsi
     const Type type = conditions.type(f);
     const Tensor<1, dim> area_ratio_n = deformed_area_vector(G, face.n, lame);
     if (type == Type::external_traction)
-      return area_ratio_n.norm() * external_traction[f];
+      return load_factor * area_ratio_n.norm() * external_traction[f];
     if (type == Type::pressure)
-      return -given_traction[f][0] * area_ratio_n;
-    return area_ratio_n.norm() * given_traction[f];
+      return -load_factor * given_traction[f][0] * area_ratio_n;
+    return load_factor * area_ratio_n.norm() * given_traction[f];
   }
 
   template <int dim>
@@ -80,6 +80,28 @@ namespace fvfsi
   }
 
   template <int dim>
+  Tensor<2, dim> SolidSolver<dim>::tangential_part(const unsigned int f) const
+  {
+    // The tangential part of grad u at boundary face f: from the vertex values (Eq. 39, present
+    // variant), or of the cell gradient.
+    const auto& face = geometry.faces[f];
+    Tensor<2, dim> T;
+    if (parameters.variant == Variant::present)
+      for (unsigned int j = 0; j < dim; ++j)
+      {
+        const Tensor<1, dim> t = tangential_gradient(face, vertex_u[j]);
+        for (unsigned int i = 0; i < dim; ++i)
+          T[i][j] = t[i];
+      }
+    else
+    {
+      const Tensor<2, dim> G_P = cell_gradient(face.P);
+      T = G_P - outer_product(face.n, face.n * G_P);
+    }
+    return T;
+  }
+
+  template <int dim>
   void SolidSolver<dim>::update_boundary_values()
   {
     for (const unsigned int f : geometry.boundary_faces())
@@ -94,7 +116,7 @@ namespace fvfsi
         {
           const auto& fn = conditions.function(f);
           for (unsigned int d = 0; d < dim; ++d)
-            boundary_u[f][d] = fn.value(face.centre, d);
+            boundary_u[f][d] = load_factor * fn.value(face.centre, d);
           break;
         }
         case Type::symmetry:
@@ -113,17 +135,7 @@ namespace fvfsi
           const Tensor<1, dim> n_q =
             first_piola_traction(G_old, face.n, lame) - lame.K() * (face.n * G_old);
           const Tensor<1, dim> g_n = (boundary_traction(f, G_old) - n_q) / lame.K();
-          Tensor<2, dim> T; // tangential part
-          if (parameters.variant == Variant::present)
-            for (unsigned int j = 0; j < dim; ++j)
-            {
-              const Tensor<1, dim> t = tangential_gradient(face, vertex_u[j]);
-              for (unsigned int i = 0; i < dim; ++i)
-                T[i][j] = t[i];
-            }
-          else
-            T = G_P - outer_product(face.n, face.n * G_P);
-          boundary_G[f] = outer_product(face.n, g_n) + T;
+          boundary_G[f] = outer_product(face.n, g_n) + tangential_part(f);
           boundary_u[f] = extrapolated + face.d_n * g_n;
           if (cell_hessian)
             boundary_u[f] += boundary_quadratic_term[f];
@@ -192,7 +204,8 @@ namespace fvfsi
           acceleration = c0 * v - c1 * v_old.components[j].local_element(c) +
                          c2 * v_old2.components[j].local_element(c);
         }
-        residual[j].local_element(c) += rho_V * (body_force_value[j][c] - acceleration);
+        residual[j].local_element(c) +=
+          rho_V * (load_factor * body_force_value[j][c] - acceleration);
       }
     }
   }

@@ -19,33 +19,41 @@ namespace fvfsi
     // of u that Anderson acceleration can model.
     if (cell_hessian)
       update_hessians();
-    FaceVector boundary_values(geometry.faces.size()); // only boundary entries are read
     for (unsigned int sweep = 0; sweep < parameters.boundary_sweeps; ++sweep)
     {
       update_boundary_values();
-      for (unsigned int j = 0; j < dim; ++j)
-      {
-        for (const unsigned int f : geometry.all_boundary_faces())
-          boundary_values[f] = boundary_u[f][j];
-        const CellVector& u_j = u.components[j];
-        if (parameters.variant == Variant::present)
-        {
-          vertex_interpolation.interpolate(u_j, boundary_values, vertex_u[j]);
-          if (cell_hessian)
-            for (const unsigned int v : vertex_interpolation.vertices())
-              vertex_u[j][v] += vertex_quadratic_term[j][v];
-        }
-        else if (parameters.variant == Variant::demirdzic_muzaferija)
-          least_squares.compute(u_j, boundary_values, grad_u[j]);
-        else
-          gauss_linear_gradient(geometry, u_j, boundary_values, grad_u[j], /*skew_corrected=*/true);
-      }
+      update_cell_gradients();
+    }
+  }
+
+  template <int dim>
+  void SolidSolver<dim>::update_cell_gradients()
+  {
+    // From u and the boundary values u_b (and the Hessians' terms): the vertex values (present
+    // variant) and the cell gradients, ghosts included.
+    FaceVector boundary_values(geometry.faces.size()); // only boundary entries are read
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      for (const unsigned int f : geometry.all_boundary_faces())
+        boundary_values[f] = boundary_u[f][j];
+      const CellVector& u_j = u.components[j];
       if (parameters.variant == Variant::present)
       {
-        impose_vertex_constraints();
-        for (unsigned int j = 0; j < dim; ++j)
-          gauss_green.compute(vertex_u[j], grad_u[j]);
+        vertex_interpolation.interpolate(u_j, boundary_values, vertex_u[j]);
+        if (cell_hessian)
+          for (const unsigned int v : vertex_interpolation.vertices())
+            vertex_u[j][v] += vertex_quadratic_term[j][v];
       }
+      else if (parameters.variant == Variant::demirdzic_muzaferija)
+        least_squares.compute(u_j, boundary_values, grad_u[j]);
+      else
+        gauss_linear_gradient(geometry, u_j, boundary_values, grad_u[j], /*skew_corrected=*/true);
+    }
+    if (parameters.variant == Variant::present)
+    {
+      impose_vertex_constraints();
+      for (unsigned int j = 0; j < dim; ++j)
+        gauss_green.compute(vertex_u[j], grad_u[j]);
     }
   }
 
@@ -135,7 +143,7 @@ namespace fvfsi
     }
     for (const auto& [v, fn] : fixed_vertex_function)
       for (unsigned int j = 0; j < dim; ++j)
-        vertex_u[j][v] = fn->value(geometry.vertices()[v], j);
+        vertex_u[j][v] = load_factor * fn->value(geometry.vertices()[v], j);
   }
 
   template <int dim>

@@ -72,6 +72,34 @@ namespace fvfsi
       "plane strain: it slows the outer iterations there (plate with a hole, 968 "
       "cells: nu = 0.45 131 -> 274, nu = 0.49 274 -> 4866 iterations; nu = 0.499 not "
       "converged after 5000).");
+    add_selection(prm, "Algorithm", algorithm,
+                  {{"segregated", Algorithm::segregated}, {"coupled", Algorithm::coupled}},
+                  "segregated: the paper's outer iterations, one displacement component at a "
+                  "time (section 3.3); coupled: Newton's method on the same discrete equations, "
+                  "all components and the boundary values (Eqs 23-24) at once, with the Jacobian "
+                  "assembled by probing (see source/solid/solid_coupled.templates.h): for slender, "
+                  "bending-dominated structures, where the segregated iteration converges slowly.");
+    prm.add_parameter("Newton tolerance", newton_tolerance,
+                      "coupled: stop when the residual has fallen by this factor (or when a "
+                      "Newton step changes u by less than Outer tolerance).",
+                      Patterns::Double(0));
+    prm.add_parameter("Max Newton iterations", max_newton_iterations,
+                      "coupled: limit of Newton iterations per solve (then a steady solve steps "
+                      "the load; a transient one stops).",
+                      Patterns::Integer(1));
+    prm.add_parameter("Newton update every iteration", newton_update_every_iteration,
+                      "coupled, St. Venant-Kirchhoff: true: a new Jacobian every Newton "
+                      "iteration; false: keep it (also from one time step to the next) while "
+                      "the Newton corrections shrink by 10 per iteration.");
+    prm.add_parameter("Jacobian-free Newton", jacobian_free,
+                      "coupled: false: the Jacobian assembled by probing and solved by `Solid "
+                      "Newton linear solver`; true: Jacobian-free Newton-Krylov, GMRES (settings "
+                      "of `Solid Newton linear solver`) on directional differences of the "
+                      "residual, preconditioned by the segregated operator (one AMG V-cycle of "
+                      "each component's A_j, diagonal scaling of the boundary rows).");
+    prm.add_parameter("Newton log", newton_log,
+                      "coupled: print a line per Newton iteration (step length, residual, "
+                      "correction).");
     const std::string syntax =
       " Syntax: `patch: expression | patch: expression`, vector components separated by `;`.";
     prm.add_parameter("Fixed displacement", fixed_displacement,
@@ -92,6 +120,7 @@ namespace fvfsi
     prm.leave_subsection();
     solver.reduction = 0.1;
     solver.declare(prm, "Solid linear solver");
+    newton_solver.declare(prm, "Solid Newton linear solver");
   }
 
   std::vector<SolidBoundaryCondition> SolidParameters::boundary_conditions() const

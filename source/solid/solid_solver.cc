@@ -3,8 +3,10 @@
 #include <fvfsi/base/parsed_function.h>
 #include <fvfsi/solid/solid_solver.h>
 
+#include "solid_coupled.templates.h"
 #include "solid_face_forces.templates.h"
 #include "solid_gradients.templates.h"
+#include "solid_jacobian_free.templates.h"
 
 #include <cmath>
 #include <limits>
@@ -60,6 +62,8 @@ namespace fvfsi
       laplacian.reinit_matrix(matrix[j]);
       linear_solver[j] = std::make_unique<LinearSolver>(parameters.solver);
     }
+    if (parameters.algorithm == SolidParameters::Algorithm::coupled)
+      setup_coupled();
   }
 
   template <int dim>
@@ -166,7 +170,8 @@ namespace fvfsi
     // The inertia term rho V a, a = c0 v - c1 v^o + c2 v^oo with v = c0 u - c1 u^o + c2 u^oo
     // (Eqs 17-18): its implicit part is rho V c0^2 u.
     const double c0 = parameters.transient ? clock.bdf().c0 : 0;
-    if (c0 * c0 != assembled_mass_coefficient)
+    if (c0 * c0 != assembled_mass_coefficient &&
+        parameters.algorithm == SolidParameters::Algorithm::segregated)
       assemble_matrices(c0 * c0);
     if (cell_hessian)
       update_boundary_values(); // this time's fixed displacements, also on ghost_boundary faces
@@ -182,6 +187,11 @@ namespace fvfsi
   template <int dim>
   void SolidSolver<dim>::solve_current_step()
   {
+    if (parameters.algorithm == SolidParameters::Algorithm::coupled)
+    {
+      solve_coupled();
+      return;
+    }
     // Outer iterations: the fixed point u = u + A^-1 R(u), accelerated by Anderson mixing.
     acceleration.clear();
     double change = 0;

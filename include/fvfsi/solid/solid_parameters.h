@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <fvfsi/base/selection.h>
+#include <fvfsi/fv/jacobian_solver.h>
 #include <fvfsi/fv/linear_solver.h>
 
 #include <string>
@@ -54,6 +55,12 @@ namespace fvfsi
       demirdzic_muzaferija, ///< least-squares cell gradients interpolated to faces
       jasak_weller          ///< skew-corrected Gauss cell gradients (solidDisplacementFoam)
     };
+    /// How a time step's nonlinear system is solved.
+    enum class Algorithm
+    {
+      segregated, ///< the paper's: component by component, outer iterations (section 3.3)
+      coupled     ///< Newton's method on all components and boundary values at once
+    };
     static const SelectionNames<Model> model_names;
     static const SelectionNames<Variant> variant_names;
 
@@ -76,6 +83,21 @@ namespace fvfsi
     /// present variant: second-order (Hessian) terms in the vertex values and the extrapolated
     /// boundary values (an extension of the paper; see solid_solver.cc).
     bool hessian_correction = false;
+
+    Algorithm algorithm = Algorithm::segregated;
+    /// coupled: stop when the residual has fallen by this factor, or when a Newton step changes u
+    /// by less than the outer tolerance (max |du| / max |u|).
+    double newton_tolerance = 1e-10;
+    unsigned int max_newton_iterations = 25;
+    /// coupled: reassemble the Jacobian of St. Venant-Kirchhoff every Newton iteration (true), or
+    /// keep it while Newton's method converges fast (false).
+    bool newton_update_every_iteration = false;
+    bool newton_log = false; ///< coupled: a line per Newton iteration
+    /// coupled: the Jacobian assembled by probing (solved by Solid Newton linear solver), or
+    /// Jacobian-free Newton-Krylov (GMRES on directional differences of the residual,
+    /// preconditioned by the segregated operator: AMG of each component's A_j).
+    bool jacobian_free = false;
+    JacobianSolverParameters newton_solver;
 
     std::string fixed_displacement, traction, pressure, symmetry, external_traction;
     LinearSolverParameters solver;

@@ -38,10 +38,12 @@
 #include <fvfsi/fv/boundary_conditions.h>
 #include <fvfsi/fv/cell_fields.h>
 #include <fvfsi/fv/gradients.h>
+#include <fvfsi/fv/jacobian_solver.h>
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/least_squares_model.h>
 #include <fvfsi/fv/linear_solver.h>
 #include <fvfsi/fv/point_probes.h>
+#include <fvfsi/fv/probed_jacobian.h>
 #include <fvfsi/fv/quadratic_fit.h>
 #include <fvfsi/fv/vertex_interpolation.h>
 #include <fvfsi/io/vtu_output.h>
@@ -76,8 +78,15 @@ namespace fvfsi
     void solve_current_step() override;
     /// Accept the step (transient: shift the time levels of u and v).
     void end_time_step() override;
-    /// Outer iterations of the last solve_current_step().
+    /// Outer iterations (Solid/Algorithm = coupled: Newton iterations) of the last
+    /// solve_current_step().
     unsigned int outer_iterations() const { return last_outer_iterations; }
+    /// Solid/Algorithm = coupled: Jacobian assemblies (Jacobian-free: base points) and residual
+    /// evaluations so far.
+    unsigned long jacobian_assemblies() const { return n_jacobians; }
+    unsigned long residual_evaluations() const { return n_residuals; }
+    /// ... and GMRES iterations of the Newton systems so far.
+    unsigned long krylov_iterations() const { return n_krylov; }
 
     const LameParameters& material() const { return lame; }
 
@@ -125,6 +134,8 @@ namespace fvfsi
     /// change max |du| / max |u|.
     double outer_iteration(unsigned int k);
     void update_gradients();
+    void update_cell_gradients();
+    dealii::Tensor<2, dim> tangential_part(unsigned int f) const;
     void update_boundary_values();
     void find_constrained_vertices();
     void impose_vertex_constraints();
@@ -133,6 +144,52 @@ namespace fvfsi
     dealii::Tensor<1, dim> face_force_density(unsigned int f) const;
     void compute_residual(std::array<CellVector, dim>& residual) const;
     void shift_time_levels();
+
+    // Solid/Algorithm = coupled (solid_coupled.templates.h): Newton's method on the unknowns x =
+    // (u per cell; u_b per symmetry and traction face; g_n = n . grad u per traction face).
+    using NewtonVector = dealii::LinearAlgebra::distributed::Vector<double>;
+    void setup_coupled();
+    void solve_coupled();
+    /// Newton's method from x at the current load factor; false (with `failure` saying why) if
+    /// it does not converge.
+    bool newton(NewtonVector& x, std::string& failure);
+    /// The damped step x += lambda dx (returns lambda, 0: none found) and the simplified Newton
+    /// correction dx_bar at the new x.
+    double damped_step(NewtonVector& x, NewtonVector& F, const NewtonVector& dx,
+                       NewtonVector& dx_bar);
+    double newton_norm(const NewtonVector& v) const;
+    void assemble_jacobian(const NewtonVector& x, const NewtonVector& F);
+    /// J dx = rhs with the Jacobian of the last assemble_jacobian() (`reduction` >= 0: GMRES's
+    /// residual reduction for this solve).
+    void solve_newton_system(NewtonVector& dx, const NewtonVector& rhs, double reduction = -1);
+    /// Jacobian-free Newton-Krylov (solid_jacobian_free.templates.h): the base point of the
+    /// directional differences, and the segregated preconditioner for the clock's c0.
+    void setup_jacobian_free(const NewtonVector& x, const NewtonVector& F);
+    void apply_segregated_preconditioner(NewtonVector& y, const NewtonVector& r) const;
+    NewtonVector jfnk_x, jfnk_F;
+    std::array<dealii::TrilinosWrappers::PreconditionAMG, dim> jfnk_amg;
+    double jfnk_mass_coefficient = -1;
+    NewtonVector jfnk_diagonal; ///< of the boundary rows (1 on the cell rows)
+    /// x from the solver's state.
+    void coupled_state(NewtonVector& x) const;
+    /// F(x): sets the state (u, boundary values, vertex values, gradients) from x, computes one
+    /// update of the boundary values and the residual of Eq. 16.
+    void coupled_residual(const NewtonVector& x, NewtonVector& F);
+    void set_fixed_boundary_values();
+    double relative_change(const NewtonVector& dx, const NewtonVector& x) const;
+
+    /// The loads (tractions, body force, fixed displacements) are scaled by this (load stepping
+    /// of the coupled algorithm; 1 otherwise).
+    double load_factor = 1;
+    std::unique_ptr<ProbedJacobian<dim>> probing;
+    /// Per face: the local Newton node of its u_b and of its g_n (invalid_cell: none).
+    std::vector<unsigned int> ub_node, gn_node;
+    double cell_size = 0; ///< (volume / cells)^(1/dim)
+    dealii::TrilinosWrappers::SparseMatrix jacobian;
+    std::unique_ptr<JacobianSolver> jacobian_solver;
+    double jacobian_mass_coefficient = -1; ///< c0^2 of the linear-elastic Jacobian, -1: none
+    std::array<CellVector, dim> coupled_cell_residual;
+    unsigned long n_jacobians = 0, n_residuals = 0, n_krylov = 0;
 
     const FVGeometry<dim>& geometry;
     SolidParameters parameters;
