@@ -84,8 +84,7 @@ namespace fvfsi
                   "upwind part: upwind (first order), linear upwind (second order: upwind cell "
                   "value + its Gauss-Green gradient times (r_f - r_U)), central (second order, "
                   "unbounded at high cell Reynolds numbers).");
-    const std::string syntax =
-      " Syntax: `patch: expression | patch: expression`, vector components separated by `;`.";
+    const std::string& syntax = boundary_expression_syntax;
     prm.add_parameter("Velocity inlet", velocity_inlet,
                       "Patches with a given velocity u(x, t) [m/s]." + syntax);
     prm.add_parameter("Outlet", outlet,

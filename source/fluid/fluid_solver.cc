@@ -445,6 +445,16 @@ namespace fvfsi
   }
 
   template <int dim>
+  Tensor<1, dim> FluidSolver<dim>::patches_force(const std::vector<std::string>& names,
+                                                 const MeshParameters& mesh) const
+  {
+    Tensor<1, dim> force;
+    for (const auto& name : names)
+      force += patch_force(mesh.patch_id(name));
+    return force;
+  }
+
+  template <int dim>
   Tensor<1, dim> FluidSolver<dim>::wall_traction(const unsigned int f) const
   {
     const auto& face = geometry.faces[f];

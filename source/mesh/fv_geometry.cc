@@ -265,6 +265,27 @@ namespace fvfsi
     face.d_n = face.n * face.d;
   }
 
+  template <int dim>
+  std::vector<double> move_mesh(FVGeometry<dim>& geometry,
+                                parallel::distributed::Triangulation<dim>& tria,
+                                const std::vector<Point<dim>>& old_positions,
+                                const std::vector<Point<dim>>& new_positions)
+  {
+    std::vector<double> swept = geometry.swept_volumes(old_positions, new_positions);
+    geometry.reinit(new_positions);
+    for (const auto& cell : tria.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int v : cell->vertex_indices())
+          cell->vertex(v) = new_positions[cell->vertex_index(v)];
+    return swept;
+  }
+
   template class FVGeometry<2>;
   template class FVGeometry<3>;
+  template std::vector<double> move_mesh(FVGeometry<2>&, parallel::distributed::Triangulation<2>&,
+                                         const std::vector<Point<2>>&,
+                                         const std::vector<Point<2>>&);
+  template std::vector<double> move_mesh(FVGeometry<3>&, parallel::distributed::Triangulation<3>&,
+                                         const std::vector<Point<3>>&,
+                                         const std::vector<Point<3>>&);
 } // namespace fvfsi

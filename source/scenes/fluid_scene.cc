@@ -103,12 +103,7 @@ namespace fvfsi
   void FluidScene<dim>::move_mesh()
   {
     const std::vector<Point<dim>> x = motion->vertex_positions();
-    const std::vector<double> swept = fv->swept_volumes(fv->vertices(), x);
-    fv->reinit(x);
-    for (const auto& cell : triangulation.active_cell_iterators())
-      if (!cell->is_artificial())
-        for (const unsigned int v : cell->vertex_indices())
-          cell->vertex(v) = x[cell->vertex_index(v)];
+    const std::vector<double> swept = fvfsi::move_mesh(*fv, triangulation, fv->vertices(), x);
     result.min_volume_ratio =
       std::min(result.min_volume_ratio, min_volume_ratio(*fv, *reference_fv, clock.time()));
     fluid->move_mesh(swept);
@@ -140,10 +135,7 @@ namespace fvfsi
   template <int dim>
   Tensor<1, dim> FluidScene<dim>::body_force() const
   {
-    Tensor<1, dim> force;
-    for (const auto& patch : scene_parameters.force_patches)
-      force += fluid->patch_force(mesh_parameters.patch_id(patch));
-    return force;
+    return fluid->patches_force(scene_parameters.force_patches, mesh_parameters);
   }
 
   template <int dim>

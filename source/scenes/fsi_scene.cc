@@ -136,12 +136,7 @@ namespace fvfsi
     TimerOutput::Scope scope(timer, "geometry");
     // Swept volumes from the positions at t^n (Eq. 3 holds over the whole time step, whatever the
     // iteration), then the geometry once, at the new positions.
-    const std::vector<double> swept = fluid_fv->swept_volumes(vertices_old, x);
-    fluid_fv->reinit(x);
-    for (const auto& cell : fluid_tria.active_cell_iterators())
-      if (!cell->is_artificial())
-        for (const unsigned int v : cell->vertex_indices())
-          cell->vertex(v) = x[cell->vertex_index(v)];
+    const std::vector<double> swept = move_mesh(*fluid_fv, fluid_tria, vertices_old, x);
     volume_ratio = min_volume_ratio(*fluid_fv, *fluid_reference_fv, clock.time());
     result.min_volume_ratio = std::min(result.min_volume_ratio, volume_ratio);
     fluid->move_mesh(swept);
@@ -308,10 +303,7 @@ namespace fvfsi
   template <int dim>
   Tensor<1, dim> FsiScene<dim>::fluid_force() const
   {
-    Tensor<1, dim> force;
-    for (const auto& patch : fluid_scene_parameters.force_patches)
-      force += fluid->patch_force(fluid_mesh_parameters.patch_id(patch));
-    return force;
+    return fluid->patches_force(fluid_scene_parameters.force_patches, fluid_mesh_parameters);
   }
 
   template <int dim>

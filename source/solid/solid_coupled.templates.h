@@ -49,7 +49,6 @@
 namespace fvfsi
 {
   using namespace dealii;
-  using Type = SolidBoundaryCondition::Type;
 
   template <int dim>
   void SolidSolver<dim>::setup_coupled()

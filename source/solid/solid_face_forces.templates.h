@@ -10,7 +10,6 @@
 namespace fvfsi
 {
   using namespace dealii;
-  using Type = SolidBoundaryCondition::Type;
 
   template <int dim>
   Tensor<2, dim> SolidSolver<dim>::face_gradient(const unsigned int f) const

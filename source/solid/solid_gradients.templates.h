@@ -9,7 +9,6 @@
 namespace fvfsi
 {
   using namespace dealii;
-  using Type = SolidBoundaryCondition::Type;
 
   template <int dim>
   void SolidSolver<dim>::update_gradients()

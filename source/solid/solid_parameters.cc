@@ -100,8 +100,7 @@ namespace fvfsi
     prm.add_parameter("Newton log", newton_log,
                       "coupled: print a line per Newton iteration (step length, residual, "
                       "correction).");
-    const std::string syntax =
-      " Syntax: `patch: expression | patch: expression`, vector components separated by `;`.";
+    const std::string& syntax = boundary_expression_syntax;
     prm.add_parameter("Fixed displacement", fixed_displacement,
                       "Patches with a given displacement u(x, t) [m]." + syntax);
     prm.add_parameter("Traction", traction,

@@ -15,7 +15,6 @@
 namespace fvfsi
 {
   using namespace dealii;
-  using Type = SolidBoundaryCondition::Type;
 
   template <int dim>
   SolidSolver<dim>::SolidSolver(const FVGeometry<dim>& geometry,

@@ -452,8 +452,9 @@ InterfaceVector PressureColumn::coupling_iteration(const InterfaceVector& displa
 // time step again from t^n. FluidSolver::move_mesh makes mesh fluxes of them, F^mesh = c0 dV^n -
 // c2 dV^(n-1), which satisfy the space conservation law (paper Eq. 3) exactly in BDF2 form.
 // Second the geometry at x^(n+1) (volumes, centroids, face area vectors, the vectors of Eqs
-// 20-22), computed once per iteration by FVGeometry::reinit. The triangulation's vertices are
-// moved as well, for the output. min_volume_ratio throws if a cell is turned inside out: that is
+// 20-22), computed once per iteration by FVGeometry::reinit. fvfsi::move_mesh
+// (mesh/fv_geometry.h) does both, in this order, and moves the triangulation's vertices as well,
+// for the output. min_volume_ratio throws if a cell is turned inside out: that is
 // how a diverging coupling usually ends.
 void PressureColumn::move_fluid_mesh(const InterfaceVector& displacement)
 {
@@ -465,12 +466,7 @@ void PressureColumn::move_fluid_mesh(const InterfaceVector& displacement)
   motion->set_patch_displacement(patch, vertex_displacement);
   const std::vector<Point<dim>> x = motion->vertex_positions();
 
-  const std::vector<double> swept = fluid_fv->swept_volumes(vertices_old, x);
-  fluid_fv->reinit(x);
-  for (const auto& cell : fluid_tria.active_cell_iterators())
-    if (!cell->is_artificial())
-      for (const unsigned int v : cell->vertex_indices())
-        cell->vertex(v) = x[cell->vertex_index(v)];
+  const std::vector<double> swept = move_mesh(*fluid_fv, fluid_tria, vertices_old, x);
   min_volume_ratio(*fluid_fv, *fluid_reference_fv, clock.time());
   fluid->move_mesh(swept);
 }

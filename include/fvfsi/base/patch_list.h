@@ -20,6 +20,10 @@ namespace fvfsi
   std::vector<NamedValue> parse_named_values(const std::string& entry,
                                              const std::string& parameter);
 
+  /// The syntax of an entry of `patch: expression` boundary conditions, for its documentation.
+  inline const std::string boundary_expression_syntax =
+    " Syntax: `patch: expression | patch: expression`, vector components separated by `;`.";
+
   /// The names of a comma-separated list (trimmed, empty items dropped).
   std::vector<std::string> parse_names(const std::string& entry);
 

@@ -167,4 +167,14 @@ namespace fvfsi
       cell_polygons;
     std::vector<dealii::Point<dim>> vertex_positions;
   };
+
+  /// One mesh motion, from `old_positions` to `new_positions` (indexed like the triangulation's
+  /// vertices): the swept volumes of every face (FVGeometry::swept_volumes, the mesh fluxes'
+  /// volumes), then the geometry at the new positions (FVGeometry::reinit) and the vertices of the
+  /// triangulation itself (for output and point location). Returns the swept volumes.
+  template <int dim>
+  std::vector<double> move_mesh(FVGeometry<dim>& geometry,
+                                dealii::parallel::distributed::Triangulation<dim>& tria,
+                                const std::vector<dealii::Point<dim>>& old_positions,
+                                const std::vector<dealii::Point<dim>>& new_positions);
 } // namespace fvfsi

@@ -123,6 +123,7 @@ namespace fvfsi
     void set_external_traction(const std::vector<dealii::Tensor<1, dim>>& traction);
 
   private:
+    using Type = SolidBoundaryCondition::Type;
     using Variant = SolidParameters::Variant;
     /// The outer iterations' unknowns (dim blocks of owned cells) for the acceleration.
     using BlockVector = dealii::LinearAlgebra::distributed::BlockVector<double>;
