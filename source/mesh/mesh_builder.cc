@@ -1,6 +1,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
 
 #include <fvfsi/base/exceptions.h>
 #include <fvfsi/mesh/benchmark_meshes.h>
@@ -157,6 +158,28 @@ namespace fvfsi
       });
   }
 
+  /// Transfinite-interpolation manifolds (deal.II's generators attach them, e.g.
+  /// channel_with_cylinder and plate_with_a_hole) initialised anew on `tria`. copy_triangulation
+  /// copies the manifold objects, but a TransfiniteInterpolationManifold keeps the coarse cells of
+  /// the triangulation it was initialised with, and a parallel::distributed::Triangulation
+  /// renumbers its coarse cells (p4est's order): refining would then look up the wrong cells
+  /// ("Computing the mapping between a real space point and a point in reference space failed").
+  /// The id is reset to a flat manifold first, so that the initialisation does not call the stale
+  /// object on the lines that carry the id themselves.
+  template <int dim>
+  void reinitialize_transfinite_manifolds(parallel::distributed::Triangulation<dim>& tria)
+  {
+    for (const types::manifold_id id : tria.get_manifold_ids())
+      if (id != numbers::flat_manifold_id &&
+          dynamic_cast<const TransfiniteInterpolationManifold<dim>*>(&tria.get_manifold(id)))
+      {
+        tria.reset_manifold(id);
+        TransfiniteInterpolationManifold<dim> manifold;
+        manifold.initialize(tria);
+        tria.set_manifold(id, manifold);
+      }
+  }
+
   template <int dim>
   void make_mesh(const MeshParameters& params, parallel::distributed::Triangulation<dim>& tria,
                  const std::string& prm_directory)
@@ -190,6 +213,7 @@ namespace fvfsi
     if (params.distortion > 0 && params.distort_coarse_mesh)
       GridTools::distort_random(params.distortion, coarse, true, params.distortion_seed);
     tria.copy_triangulation(coarse);
+    reinitialize_transfinite_manifolds(tria);
     tria.refine_global(params.n_global_refinements);
     for (const auto& cell : tria.active_cell_iterators())
       if (!cell->is_artificial())
