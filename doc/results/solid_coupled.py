@@ -6,6 +6,7 @@ A case NAME has up to three runs OUT/NAME/1..3 (summary.json, log, rc = exit sta
 times are the median of the runs, other values those of the first run.
 """
 import json
+import os
 import statistics
 import sys
 from pathlib import Path
@@ -42,17 +43,21 @@ def wall(summaries):
     return f"{text}, {label}"
 
 
+# The wall-time cap of the runs (solid_coupled.sh: CAP, default 180 s).
+CAP = os.environ.get("CAP", "180")
+
+
 def failure(rc, log):
     if rc is None:
         return "not run"
     if rc == 124:
         progress = [line for line in log.splitlines() if "outer iteration" in line]
         if not progress:
-            return "stopped at the 180 s cap"
+            return f"stopped at the {CAP} s cap"
         words = progress[-1].replace(":", "").split()
         k = words[words.index("iteration") + 1]
         change = words[words.index("change") + 1]
-        return f"stopped at the 180 s cap: {k} outer iterations, relative change {change}"
+        return f"stopped at the {CAP} s cap: {k} outer iterations, relative change {change}"
     last = [line for line in log.splitlines() if "did not converge" in line or "error" in line]
     return "failed: " + (last[-1].strip() if last else f"exit status {rc}")
 
