@@ -4,9 +4,9 @@
 // tolerance of 1e-9:
 //   (a) each converges. With alpha = 0.95 from the start the pseudo-transient iteration (no
 //       pressure relaxation) is unstable where viscosity dominates; solve_steady() lowers alpha
-//       when the relative change makes no progress for 50 pseudo steps (Re = 1: 0.95 -> 0.9 ->
-//       0.8, printed): the geometric mean of the change over 50 pseudo steps not 5% below that
-//       of the 50 before;
+//       when the relative change makes no progress for 100 pseudo steps (Re = 1: 0.95 -> 0.9 ->
+//       0.8, printed): the geometric mean of the change over 50 pseudo steps, twice in a row, not
+//       5% below the best of the windows since alpha was set;
 //   (b) the result does not depend on that: the drag at Re = 1 and 20 equals that of a run at a
 //       fixed alpha = 0.7 (never lowered) to 1e-6 relative (the consistent Rhie-Chow flux makes
 //       the steady solution independent of the pseudo time step; measured differences ~1e-8,
@@ -14,9 +14,10 @@
 //       compares two alphas there);
 //   (c) a run that cannot reach its tolerance (1e-16, below round-off) stops with an error that
 //       says whether the change oscillates or stagnates, names Momentum relaxation, and comes
-//       within 600 pseudo steps (measured: 550: converged to round-off by about step 150, the
-//       change then wanders between 1e-12 and 1e-10, and alpha is lowered three times, 100
-//       steps each), not after the step limit (5000).
+//       within 800 pseudo steps (measured: 750: converged to round-off by about step 150, the
+//       change then wanders between 1e-12 and 1e-10, and alpha is lowered three times, 100-200
+//       steps each: a slow but converging iteration, as the cavity of doc/results/cavity.md at
+//       h = 0.0125, needs the second window), not after the step limit (5000).
 // Printed: verdicts, and the pseudo steps of (a) to stdout only (they depend on round-off).
 #include <fvfsi/scenes/fluid_scene.h>
 
@@ -84,9 +85,9 @@ int main(int argc, char** argv)
   std::printf("tolerance 1e-16: %s\n", stuck.error.c_str());
   const bool which = stuck.error.find("oscillates") != std::string::npos ||
                      stuck.error.find("stagnates") != std::string::npos;
-  out << "tolerance below round-off: stops within 600 pseudo steps saying how the change behaves "
+  out << "tolerance below round-off: stops within 800 pseudo steps saying how the change behaves "
          "and naming Momentum relaxation: "
-      << yes_no(stuck.pseudo_steps <= 600 && which &&
+      << yes_no(stuck.pseudo_steps <= 800 && which &&
                 stuck.error.find("Momentum relaxation") != std::string::npos)
       << "\n";
 }
