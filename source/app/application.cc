@@ -5,7 +5,10 @@
 #include <fvfsi/app/application.h>
 #include <fvfsi/app/parameters.h>
 #include <fvfsi/base/exceptions.h>
+#include <fvfsi/embedded_files.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -17,15 +20,74 @@ namespace fvfsi
 
   namespace
   {
+    /// `Plot history`: each *history.txt table of `dir` as a PNG beside it (FSI: fsi_history.png),
+    /// by the built-in plot_history.py, written to `dir` so that it can be run again by hand.
+    void plot_histories(const std::string& dir, std::ostream& out)
+    {
+      std::vector<std::filesystem::path> tables;
+      for (const auto& entry : std::filesystem::directory_iterator(dir))
+      {
+        const std::string name = entry.path().filename().string();
+        if (name.size() >= 11 && name.compare(name.size() - 11, 11, "history.txt") == 0)
+          tables.push_back(entry.path());
+      }
+      if (tables.empty())
+        return;
+      const std::string script = dir + "/plot_history.py";
+      std::ofstream(script) << embedded::plot_history_py;
+      // Debian's /usr/bin/python3 has matplotlib from python3-matplotlib; a python3 found
+      // earlier on the PATH (pyenv, conda) may not.
+      std::string python;
+      for (const std::string candidate : {"python3", "/usr/bin/python3"})
+        if (std::system((candidate + " -c 'import matplotlib' > /dev/null 2>&1").c_str()) == 0)
+        {
+          python = candidate;
+          break;
+        }
+      if (python.empty())
+      {
+        out << "fvfsi: no plot of the history: python3 with matplotlib is needed (Debian: "
+               "apt-get install python3-matplotlib), then: python3 "
+            << script << " TABLE.txt TABLE.png\n";
+        return;
+      }
+      for (const auto& table : tables)
+      {
+        const std::string png = std::filesystem::path(table).replace_extension(".png").string();
+        const std::string command =
+          python + " '" + script + "' '" + table.string() + "' '" + png + "'";
+        if (std::system(command.c_str()) == 0)
+          out << "fvfsi: plotted the history: " << png << "\n";
+        else
+          out << "fvfsi: plotting the history failed: " << command << "\n";
+      }
+    }
+
+    /// "fvfsi: fields for ParaView: DIR/fluid.pvd, DIR/solid.pvd".
+    void name_field_files(const std::string& dir, std::ostream& out)
+    {
+      std::vector<std::string> pvd;
+      for (const auto& entry : std::filesystem::directory_iterator(dir))
+        if (entry.path().extension() == ".pvd")
+          pvd.push_back(entry.path().string());
+      std::sort(pvd.begin(), pvd.end());
+      if (pvd.empty())
+        return;
+      out << "fvfsi: fields for ParaView:";
+      for (unsigned int i = 0; i < pvd.size(); ++i)
+        out << (i ? ", " : " ") << pvd[i];
+      out << "\n";
+    }
+
     const char* usage =
       "usage: fvfsi [CASE.prm] [--set \"Section/Sub/Key=value\"]...\n"
       "       fvfsi --print-parameters [CASE.prm]\n"
       "       fvfsi --help\n"
       "\n"
-      "Runs the scene that CASE.prm describes (without a file: the built-in default scene, a 2D\n"
-      "FV Poisson problem with a manufactured solution on a distorted mesh). `--set` overrides "
-      "one\n"
-      "parameter after the file is read and may be repeated, e.g.\n"
+      "Runs the scene that CASE.prm describes. Without a file: the built-in default scene\n"
+      "(prm/fsi_demo.prm), a 2D FSI demo: the Turek-Hron FSI1 flag behind a cylinder on coarse\n"
+      "meshes, about 20 s on one core, written to output-demo/ with a PNG plot of its history.\n"
+      "`--set` overrides one parameter after the file is read and may be repeated, e.g.\n"
       "  fvfsi case.prm --set \"Mesh/Global refinements=5\" --set \"Output directory=/tmp/run5\"\n"
       "`--print-parameters` prints every parameter with its value (default or from CASE.prm) and\n"
       "its documentation. Run in parallel with `mpirun -np N fvfsi CASE.prm`.\n"
@@ -151,6 +213,9 @@ namespace fvfsi
       {
         summary.write(dir + "/summary.json");
         out << "fvfsi: wrote " << dir << "/summary.json\n";
+        name_field_files(dir, out);
+        if (parameters.run.plot_history)
+          plot_histories(dir, out);
       }
     }
   } // namespace

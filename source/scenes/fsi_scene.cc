@@ -360,7 +360,9 @@ namespace fvfsi
       return;
     }
     const unsigned int total = clock.n_steps();
-    const Progress progress;
+    const auto last_fluid_alone_step = static_cast<unsigned int>(
+      std::min<double>(total, std::floor(prm.coupling.start_time / clock.time_step() + 1e-9)));
+    Progress progress;
     for (unsigned int step = 1; step <= total; ++step)
     {
       unsigned int iterations = 0;
@@ -379,6 +381,8 @@ namespace fvfsi
       result.n_time_steps = step;
       if (iterations > 0)
         result.coupled_wall_seconds += step_timer.wall_time();
+      if (iterations > 0 && result.n_coupled_steps == 0)
+        progress.new_phase(step); // coupled steps cost more: estimate from them alone
       result.n_coupled_steps += iterations > 0;
       result.total_coupling_iterations += iterations;
       result.max_coupling_iterations = std::max(result.max_coupling_iterations, iterations);
@@ -389,8 +393,12 @@ namespace fvfsi
           pcout << iterations << " coupling iterations (mean " << std::setprecision(3)
                 << result.mean_coupling_iterations() << ")";
         else
-          pcout << "fluid alone (before Coupling/Start time)";
-        pcout << ", " << progress.elapsed_and_left(step, total) << "\n" << std::setprecision(6);
+          pcout << "fluid alone (before Coupling/Start time), "
+                << progress.elapsed_and_until(step, last_fluid_alone_step) << " (coupled steps "
+                << "cost more: the time left follows from them)";
+        if (iterations > 0)
+          pcout << ", " << progress.elapsed_and_left(step, total);
+        pcout << "\n" << std::setprecision(6);
       }
       if (fluid_scene_parameters.output_interval > 0 &&
           step % fluid_scene_parameters.output_interval == 0)
@@ -399,6 +407,28 @@ namespace fvfsi
     if (fluid_scene_parameters.output_interval == 0)
       output_results();
     timer.print_summary();
+    print_result();
+  }
+
+  template <int dim>
+  void FsiScene<dim>::print_result() const
+  {
+    // The key figures of the last time step (also in summary.json), for the log.
+    pcout << "fvfsi: FSI result at t = " << clock.time() << " s:";
+    for (unsigned int i = 0; i < probes.size(); ++i)
+    {
+      const Tensor<1, dim> u = solid_probe(i);
+      pcout << " u(" << probes.name(i) << ") = (";
+      for (unsigned int d = 0; d < dim; ++d)
+        pcout << (d ? ", " : "") << u[d];
+      pcout << ") m;";
+    }
+    if (last_force)
+      pcout << " drag " << (*last_force)[0] << " N/m, lift " << (*last_force)[1] << " N/m;";
+    pcout << " " << std::setprecision(3) << result.mean_coupling_iterations()
+          << " coupling iterations per coupled step (max " << result.max_coupling_iterations
+          << ")\n"
+          << std::setprecision(6);
   }
 
   template <int dim>

@@ -31,6 +31,7 @@ namespace fvfsi
     unsigned int dim = 2;
     Scene scene = Scene::poisson;
     std::string output_directory = "output";
+    bool plot_history = false; ///< plot the history tables as PNG at the end
     void declare(dealii::ParameterHandler& prm);
   };
 
@@ -58,7 +59,8 @@ namespace fvfsi
   };
 
   /**
-   * Read `file` (if not empty), then apply the `overrides` ("Section/Sub/Key=value"). Throws
+   * Read `file` (empty: the built-in default scene, prm/fsi_demo.prm), then apply the
+   * `overrides` ("Section/Sub/Key=value"). Throws
    * std::runtime_error with a message that names the file and line, or the override, at fault.
    */
   void read_parameters(AllParameters& parameters, const std::string& file,

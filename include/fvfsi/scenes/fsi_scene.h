@@ -96,6 +96,8 @@ namespace fvfsi
     const InterfaceVector& interface_displacement() const { return d; }
     /// The displacement at solid probe i [m] (collective).
     dealii::Tensor<1, dim> solid_probe(unsigned int i) const;
+    /// Print the probes' displacements, the forces and the coupling iterations of the run.
+    void print_result() const;
     const PointProbes<dim>& solid_probes() const { return probes; }
 
   private:
