@@ -5,7 +5,7 @@
 # table (u_y(A), F_y, errors against the finest mesh, coupling iterations, fluid pseudo steps,
 # solid outer iterations, wall time) and the observed orders of Eq. 34, writes
 # doc/results/cavity_convergence.png and the "cavity" entry of doc/results/fsi_benchmarks.json.
-# One MPI rank, Release build, one run at a time (h = 0.0125: about ... min).
+# One MPI rank, Release build, one run at a time (h = 0.0125 does not converge yet: cavity.md).
 #   usage: doc/results/cavity.sh [path/to/fvfsi [RUN_DIRECTORY]]   (default: build/fvfsi, build/cavity_runs)
 set -euo pipefail
 python=${PYTHON:-/usr/bin/python3} # Debian's, with python3-numpy and python3-matplotlib

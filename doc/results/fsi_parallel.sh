@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Parallel efficiency of the shipped FSI3 case (doc/results/performance.md, section 8): the first
+# 110 time steps of prm/turek_hron_fsi3.prm (fluid n = 60: 47 160 cells, flag 123 x 6: 738 cells,
+# dt = 0.75 ms), the coupling from step 11 on (Coupling/Start time = 0.0075), on 1 and 2 MPI ranks
+# (fluid and solid each decomposed by p4est on its own), REPEATS runs each, alternating. Prints
+# the wall time of the coupled steps (summary.json: coupled_wall_seconds) and of the whole run,
+# the medians, the speed-up and the efficiency T1 / (2 T2). Needs two free cores.
+#   usage: doc/results/fsi_parallel.sh [path/to/fvfsi [RUN_DIRECTORY [REPEATS]]]
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+fvfsi=${1:-build/fvfsi}
+runs=${2:-build/fsi_parallel}
+repeats=${3:-3}
+mkdir -p "$runs"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load: $(cut -d' ' -f1-3 /proc/loadavg); commit $(git rev-parse --short HEAD)"
+set_args=(--set "Coupling/Start time=0.0075" --set "Time/End time=0.0825"
+          --set "Fluid scene/Output interval=0")
+for r in $(seq 1 "$repeats"); do
+  for np in 1 2; do
+    out=$runs/np${np}_$r
+    mpirun --oversubscribe -np "$np" "$fvfsi" prm/turek_hron_fsi3.prm "${set_args[@]}" \
+      --set "Output directory=$out" > "$out.log" 2>&1
+  done
+done
+/usr/bin/python3 - "$runs" "$repeats" <<'PY'
+import json, statistics, sys
+runs, repeats = sys.argv[1], int(sys.argv[2])
+t = {}
+for np in (1, 2):
+    s = [json.load(open("%s/np%d_%d/summary.json" % (runs, np, r))) for r in range(1, repeats + 1)]
+    t[np] = (statistics.median(x["results"]["coupled_wall_seconds"] for x in s),
+             statistics.median(x["wall_seconds"] for x in s),
+             [round(x["results"]["coupled_wall_seconds"], 2) for x in s],
+             s[0]["results"]["coupling_iterations"])
+print("| ranks | coupled steps [s] (runs) | median | whole run [s] | coupling iterations |")
+print("|---|---|---|---|---|")
+for np in (1, 2):
+    print("| %d | %s | %.2f | %.2f | %d |" % (np, ", ".join(map(str, t[np][2])), t[np][0], t[np][1], t[np][3]))
+print("speed-up (coupled steps) %.2f, efficiency %.0f%%; whole run: %.2f, %.0f%%" % (
+    t[1][0] / t[2][0], 50 * t[1][0] / t[2][0], t[1][1] / t[2][1], 50 * t[1][1] / t[2][1]))
+PY
