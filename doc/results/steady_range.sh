@@ -3,8 +3,8 @@
 # doc/results/fluid_stability.md): prm/turek_hron_cfd2.prm as shipped (Momentum relaxation 0.95,
 # steady tolerance 5e-5) with the mean inflow U = Re nu / D (D = 0.1 m, nu = 1e-3 m^2/s) on
 #   - the Turek-Hron channel with the rigid flag (fvfsi_turek_hron_channel 32, 13 409 cells), and
-#   - deal.II's channel_with_cylinder (no flag; 0.03: 2: 2.0: true, refined twice),
-# Re = 1, 5, 10, 20, 40, 60, 100. Prints a table: pseudo steps, final Momentum relaxation, drag,
+#   - deal.II's channel_with_cylinder (no flag; 0.03: 2: 2.0: true, refined 4 times: 27 648 cells),
+# Re = 1, 5, 10, 20, 40, 60, 100 (MESHES="turek_hron channel_with_cylinder" by default). Prints a table: pseudo steps, final Momentum relaxation, drag,
 # wall time, or the message the run stopped with. One rank, one run at a time, a few minutes.
 #   usage: doc/results/steady_range.sh [path/to/fvfsi [RUN_DIRECTORY]]
 set -uo pipefail
@@ -16,13 +16,13 @@ echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -
 echo
 echo "| mesh | Re | cells | pseudo steps | alpha at the end | drag [N/m] | wall [s] | stopped with |"
 echo "|---|---|---|---|---|---|---|---|"
-for mesh in turek_hron channel_with_cylinder; do
+for mesh in ${MESHES:-turek_hron channel_with_cylinder}; do
   if [[ $mesh == turek_hron ]]; then
     geometry=(--set "Mesh/Generator arguments=32")
   else
     geometry=(--set "Mesh/Generator=channel_with_cylinder"
               --set "Mesh/Generator arguments=0.03: 2: 2.0: true"
-              --set "Mesh/Global refinements=2"
+              --set "Mesh/Global refinements=4"
               --set "Mesh/Patch names=0: inlet, 1: outlet, 2: cylinder, 3: walls"
               --set "Fluid/Wall=walls, cylinder" --set "Fluid scene/Force patches=cylinder")
   fi
