@@ -3,9 +3,9 @@
 #include <deal.II/base/utilities.h>
 
 #include <fvfsi/app/application.h>
+#include <fvfsi/app/embedded_files.h>
 #include <fvfsi/app/parameters.h>
 #include <fvfsi/base/exceptions.h>
-#include <fvfsi/embedded_files.h>
 
 #include <algorithm>
 #include <cstdlib>

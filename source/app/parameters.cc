@@ -1,8 +1,8 @@
 #include <deal.II/base/utilities.h>
 
+#include <fvfsi/app/embedded_files.h>
 #include <fvfsi/app/parameters.h>
 #include <fvfsi/base/exceptions.h>
-#include <fvfsi/embedded_files.h>
 
 #include <fstream>
 #include <stdexcept>
