@@ -5,7 +5,8 @@
 #   - the Turek-Hron channel with the rigid flag (fvfsi_turek_hron_channel 32, 13 409 cells), and
 #   - deal.II's channel_with_cylinder (no flag; 0.03: 2: 2.0: true, refined 4 times: 27 648 cells),
 # Re = 1, 5, 10, 20, 40, 60, 100 (MESHES="turek_hron channel_with_cylinder" by default). Prints a table: pseudo steps, final Momentum relaxation, drag,
-# wall time, or the message the run stopped with. One rank, one run at a time, a few minutes.
+# wall time, or the message the run stopped with; doc/results/steady_range.png. One rank, one run
+# at a time, about 10 minutes.
 #   usage: doc/results/steady_range.sh [path/to/fvfsi [RUN_DIRECTORY]]
 set -uo pipefail
 cd "$(dirname "$0")/../.."
@@ -54,3 +55,38 @@ else:
 PY
   done
 done
+
+# The plot: pseudo steps per Re for each mesh (a run that stopped: a cross at its last step).
+/usr/bin/python3 - "$runs" doc/results/steady_range.png ${MESHES:-turek_hron channel_with_cylinder} <<'PY'
+import json, os, re, sys
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+runs, png, meshes = sys.argv[1], sys.argv[2], sys.argv[3:]
+fig, ax = plt.subplots(figsize=(6, 3.5))
+for mesh in meshes:
+    done, stopped = [], []
+    for Re in (1, 5, 10, 20, 40, 60, 100):
+        path = "%s/%s_re%d/summary.json" % (runs, mesh, Re)
+        if not os.path.exists(path):
+            continue
+        s = json.load(open(path))
+        if s.get("status") == "completed":
+            done.append((Re, s["results"]["time_steps"]))
+        else:
+            steps = re.findall(r"to (\d+)\) the relative change", s.get("error", ""))
+            if steps:
+                stopped.append((Re, int(steps[0])))
+    line, = ax.plot(*zip(*done), "o-", label=mesh + " (converged)") if done else (None,)
+    if stopped:
+        ax.plot(*zip(*stopped), "x", ms=10, color=line.get_color() if line else None,
+                label=mesh + " (stopped: no steady state)")
+ax.set_xscale("log")
+ax.set_xlabel("Re = U D / nu")
+ax.set_ylabel("pseudo time steps")
+ax.grid(alpha=0.3)
+ax.legend(fontsize=8)
+fig.tight_layout()
+fig.savefig(png, dpi=100)
+print("wrote", png)
+PY
