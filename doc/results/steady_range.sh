@@ -4,9 +4,9 @@
 # steady tolerance 5e-5) with the mean inflow U = Re nu / D (D = 0.1 m, nu = 1e-3 m^2/s) on
 #   - the Turek-Hron channel with the rigid flag (fvfsi_turek_hron_channel 32, 13 409 cells), and
 #   - deal.II's channel_with_cylinder (no flag; 0.03: 2: 2.0: true, refined 4 times: 27 648 cells),
-# Re = 1, 5, 10, 20, 40, 60, 100 (MESHES="turek_hron channel_with_cylinder" by default). Prints a table: pseudo steps, final Momentum relaxation, drag,
-# wall time, or the message the run stopped with; doc/results/steady_range.png. One rank, one run
-# at a time, about 10 minutes.
+# Re = 1, 5, 10, 20, 40, 60, 100 (MESHES="turek_hron channel_with_cylinder" by default). Prints a
+# table: pseudo steps, final Momentum relaxation, drag, wall time, or the message the run stopped
+# with; writes doc/results/steady_range.png. One rank, one run at a time, about 10 minutes.
 #   usage: doc/results/steady_range.sh [path/to/fvfsi [RUN_DIRECTORY]]
 set -uo pipefail
 cd "$(dirname "$0")/../.."
