@@ -24,7 +24,7 @@ namespace fvfsi
     }
 
     /// `step` done, a costlier phase begins after step `until` (an FSI run's coupling): "elapsed
-    /// 12.3 s, about 20 s to step 2667 (then the estimate follows the new phase)".
+    /// 12.3 s, about 20 s to step 2667", at the rate of the steps so far.
     std::string elapsed_and_until(const unsigned int step, const unsigned int until) const
     {
       return "elapsed " + duration(timer.wall_time()) + ", about " +
