@@ -11,6 +11,9 @@ the per-coupling-iteration breakdown (medians) from the TimerOutput sections of 
 
   usage: doc/results/fsi_iteration_cost.py FVFSI RUN_DIRECTORY [REPEATS [ALGORITHM...]]
          (defaults: 3 repeats, algorithms segregated and coupled)
+Also writes RUN_DIRECTORY/iteration_cost.png: the sections of a coupling iteration as stacked
+bars per algorithm beside the fluid step alone and 1.3x it (issue 12's target). A completed run
+in RUN_DIRECTORY is not run again.
 """
 import json
 import os
@@ -66,6 +69,7 @@ def main():
     print("| solid algorithm | " + " | ".join(SECTIONS) + " | all (timed) | coupled phase "
           "| fluid step alone | ratio (timed / coupled phase) | coupling iterations |")
     print("|---" * (len(SECTIONS) + 7) + "|")
+    medians = {}
     for algorithm in algorithms:
         rows = []
         for r in range(repeats):
@@ -75,11 +79,36 @@ def main():
             fluid = run(fvfsi, base + "_fluid", solid + ["Coupling/Start time=1"])
             rows.append(breakdown(coupled, fluid))
         med = {k: statistics.median(row[k] for row in rows) for k in rows[0]}
+        medians[algorithm] = med
         ms = lambda x: "%.1f" % (1e3 * x)
         print("| %s | %s | %s | %s | %s | %.2f / %.2f | %d |" % (
             algorithm, " | ".join(ms(med[s]) for s in SECTIONS), ms(med["all"]),
             ms(med["coupled wall"]), ms(med["fluid step"]), med["all"] / med["fluid step"],
             med["coupled wall"] / med["fluid step"], med["iterations"]))
+    plot(medians, os.path.join(runs, "iteration_cost.png"))
+
+
+def plot(medians, png):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6, 3.5))
+    names = list(medians)
+    for i, algorithm in enumerate(names):
+        bottom = 0
+        for j, section in enumerate(SECTIONS):
+            height = 1e3 * medians[algorithm][section]
+            ax.bar(i, height, bottom=bottom, color="C%d" % j, label=section if i == 0 else None)
+            bottom += height
+        step = 1e3 * medians[algorithm]["fluid step"]
+        ax.hlines([step, 1.3 * step], i - 0.4, i + 0.4, colors="k", linestyles=["-", "--"])
+    ax.set_xticks(range(len(names)), [n + " solid" for n in names])
+    ax.set_ylabel("ms per coupling iteration")
+    ax.set_title("FSI3, 20 960 + 328 cells; lines: fluid step alone, 1.3x", fontsize=9)
+    ax.legend(fontsize=8, loc="upper right")
+    fig.tight_layout()
+    fig.savefig(png, dpi=100)
+    print("wrote", png)
 
 
 if __name__ == "__main__":
