@@ -4,7 +4,9 @@
 # dt = 0.75 ms), the coupling from step 11 on (Coupling/Start time = 0.0075), on 1 and 2 MPI ranks
 # (fluid and solid each decomposed by p4est on its own), REPEATS runs each, alternating. Prints
 # the wall time of the coupled steps (summary.json: coupled_wall_seconds) and of the whole run,
-# the medians, the speed-up and the efficiency T1 / (2 T2). Needs two free cores.
+# the medians, the speed-up and the efficiency T1 / (2 T2), and writes RUN_DIRECTORY/parallel.png
+# (the seconds of each TimerOutput section on 1 and 2 ranks, median runs). Needs two free cores;
+# a completed run in RUN_DIRECTORY is not run again.
 #   usage: doc/results/fsi_parallel.sh [path/to/fvfsi [RUN_DIRECTORY [REPEATS]]]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -19,6 +21,7 @@ set_args=(--set "Coupling/Start time=0.0075" --set "Time/End time=0.0825"
 for r in $(seq 1 "$repeats"); do
   for np in 1 2; do
     out=$runs/np${np}_$r
+    [[ -f $out/summary.json ]] && grep -q '"completed"' "$out/summary.json" && continue
     mpirun --oversubscribe -np "$np" "$fvfsi" prm/turek_hron_fsi3.prm "${set_args[@]}" \
       --set "Output directory=$out" > "$out.log" 2>&1
   done
@@ -39,4 +42,29 @@ for np in (1, 2):
     print("| %d | %s | %.2f | %.2f | %d |" % (np, ", ".join(map(str, t[np][2])), t[np][0], t[np][1], t[np][3]))
 print("speed-up (coupled steps) %.2f, efficiency %.0f%%; whole run: %.2f, %.0f%%" % (
     t[1][0] / t[2][0], 50 * t[1][0] / t[2][0], t[1][1] / t[2][1], 50 * t[1][1] / t[2][1]))
+
+# The sections of the median run of each rank count.
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+timing = {}
+for np in (1, 2):
+    s = [json.load(open("%s/np%d_%d/summary.json" % (runs, np, r))) for r in range(1, repeats + 1)]
+    s.sort(key=lambda x: x["results"]["coupled_wall_seconds"])
+    timing[np] = s[len(s) // 2]["timing"]
+sections = [k for k in timing[1] if timing[1][k] > 0.01 * sum(timing[1].values())]
+fig, ax = plt.subplots(figsize=(6, 3.5))
+for i, np in enumerate((1, 2)):
+    ax.bar([j + 0.4 * i for j in range(len(sections))], [timing[np][k] for k in sections], 0.4,
+           label="%d rank%s" % (np, "s" if np > 1 else ""))
+for j, k in enumerate(sections):
+    ax.text(j + 0.2, max(timing[1][k], timing[2][k]), "%.0f%%" % (50 * timing[1][k] / timing[2][k]),
+            ha="center", va="bottom", fontsize=8)
+ax.set_xticks([j + 0.2 for j in range(len(sections))], sections, fontsize=8)
+ax.set_ylabel("wall time [s]")
+ax.set_title("FSI3 shipped, 110 steps: sections on 1 and 2 ranks (efficiency)", fontsize=9)
+ax.legend(fontsize=8)
+fig.tight_layout()
+fig.savefig(runs + "/parallel.png", dpi=100)
+print("wrote", runs + "/parallel.png")
 PY
