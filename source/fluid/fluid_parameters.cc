@@ -28,10 +28,14 @@ namespace fvfsi
     prm.add_parameter("Density", rho, "rho [kg/m^3] (forces and pressure output are in N, Pa).",
                       Patterns::Double(0));
     prm.add_parameter("Kinematic viscosity", nu, "nu [m^2/s].", Patterns::Double(0));
-    prm.add_parameter("Body force", body_force,
-                      "g [m/s^2] per unit mass, dim expressions of x, y[, z], t separated by `;`.");
-    prm.add_parameter("Initial velocity", initial_velocity,
-                      "u at t = 0 [m/s], dim expressions of x, y[, z] separated by `;`.");
+    prm.add_parameter(
+      "Body force", body_force,
+      "g [m/s^2] per unit mass, dim expressions of x, y[, z], t separated by `;` (`0`: "
+      "the zero vector in 2D and 3D).");
+    prm.add_parameter(
+      "Initial velocity", initial_velocity,
+      "u at t = 0 [m/s], dim expressions of x, y[, z] separated by `;` (`0`: the zero "
+      "vector).");
     prm.add_parameter("Transient", transient,
                       "true: time accurate, BDF2 (first step backward Euler), PISO; false: steady, "
                       "by local pseudo time steps (set by Momentum relaxation) until the solution "

@@ -28,8 +28,10 @@ namespace fvfsi
     prm.add_parameter("Poisson's ratio", nu, "nu [-].", Patterns::Double(-0.999, 0.4999));
     prm.add_parameter("Density", rho, "rho_0 [kg/m^3] (reference configuration).",
                       Patterns::Double(0));
-    prm.add_parameter("Body force", body_force,
-                      "b [m/s^2] per unit mass, dim expressions of x, y[, z], t separated by `;`.");
+    prm.add_parameter(
+      "Body force", body_force,
+      "b [m/s^2] per unit mass, dim expressions of x, y[, z], t separated by `;` (`0`: "
+      "the zero vector in 2D and 3D).");
     add_selection(prm, "Variant", variant, variant_names,
                   "Face gradient: present (paper: central normal part + vertex Gauss-Green "
                   "tangential part, also on boundary faces), Demirdzic-Muzaferija (least-squares "

@@ -30,10 +30,10 @@ namespace fvfsi
   {
     FluidParameters();
 
-    double rho = 1000;                     ///< density [kg/m^3]
-    double nu = 1e-3;                      ///< kinematic viscosity [m^2/s]
-    std::string body_force = "0; 0";       ///< g [m/s^2], vector expression of x, y[, z], t
-    std::string initial_velocity = "0; 0"; ///< u(x, t = 0) [m/s]
+    double rho = 1000;            ///< density [kg/m^3]
+    double nu = 1e-3;             ///< kinematic viscosity [m^2/s]
+    std::string body_force = "0"; ///< g [m/s^2], vector expression of x, y[, z], t (`0`: zero)
+    std::string initial_velocity = "0"; ///< u(x, t = 0) [m/s] (`0`: zero)
 
     bool transient = true;             ///< false: steady (relaxed pseudo time steps to convergence)
     double momentum_relaxation = 0.95; ///< steady: alpha, the local pseudo time step

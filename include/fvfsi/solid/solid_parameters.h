@@ -65,11 +65,11 @@ namespace fvfsi
     static const SelectionNames<Variant> variant_names;
 
     Model model = Model::linear_elastic;
-    Plane plane = Plane::strain;     ///< 2D only
-    double E = 1e7;                  ///< Young's modulus [Pa]
-    double nu = 0.3;                 ///< Poisson's ratio [-]
-    double rho = 1000;               ///< density rho_0 [kg/m^3]
-    std::string body_force = "0; 0"; ///< b [m/s^2], vector expression of x, y[, z], t
+    Plane plane = Plane::strain;  ///< 2D only
+    double E = 1e7;               ///< Young's modulus [Pa]
+    double nu = 0.3;              ///< Poisson's ratio [-]
+    double rho = 1000;            ///< density rho_0 [kg/m^3]
+    std::string body_force = "0"; ///< b [m/s^2], vector expression of x, y[, z], t (`0`: zero)
     Variant variant = Variant::present;
 
     bool transient = false; ///< false: steady (no inertia)
