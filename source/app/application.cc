@@ -86,7 +86,7 @@ namespace fvfsi
       "\n"
       "Runs the scene that CASE.prm describes. Without a file: the built-in default scene\n"
       "(prm/fsi_demo.prm), a 2D FSI demo: the Turek-Hron FSI1 flag behind a cylinder on coarse\n"
-      "meshes, about 20 s on one core, written to output-demo/ with a PNG plot of its history.\n"
+      "meshes, about 12 s on one core, written to output-demo/ with a PNG plot of its history.\n"
       "`--set` overrides one parameter after the file is read and may be repeated, e.g.\n"
       "  fvfsi case.prm --set \"Mesh/Global refinements=5\" --set \"Output directory=/tmp/run5\"\n"
       "`--print-parameters` prints every parameter with its value (default or from CASE.prm) and\n"

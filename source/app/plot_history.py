@@ -10,7 +10,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-UNITS = {"t": "s", "drag": "N/m", "lift": "N/m", "ux_A": "m", "uy_A": "m", "uz_A": "m"}
+UNITS = {"drag": "N/m", "lift": "N/m", "ux_A": "m", "uy_A": "m", "uz_A": "m"}
 
 
 def read(path):

@@ -8,6 +8,8 @@
 // u_y(A) within 4%, drag and lift within 1.5%. np = 1 and np = 2 print the same verdicts.
 #include <fvfsi/app/application.h>
 
+#include <boost/property_tree/json_parser.hpp>
+
 #include "../test_utilities.h"
 
 #include <cmath>
@@ -16,24 +18,6 @@
 #include <sstream>
 
 using namespace fvfsi_test;
-
-/// The number after `key` in `text` (summary.json), or NaN.
-std::vector<double> numbers_after(const std::string& text, const std::string& key, unsigned int n)
-{
-  std::vector<double> x;
-  auto at = text.find("\"" + key + "\"");
-  if (at == std::string::npos)
-    return std::vector<double>(n, std::nan(""));
-  at = text.find(':', at) + 1;
-  for (unsigned int i = 0; i < n; ++i)
-  {
-    at = text.find_first_of("-0123456789", at);
-    std::size_t length = 0;
-    x.push_back(std::stod(text.substr(at), &length));
-    at += length;
-  }
-  return x;
-}
 
 bool within(const double x, const double reference, const double tolerance)
 {
@@ -52,23 +36,39 @@ int main(int argc, char** argv)
   std::cout.rdbuf(console);
   if (root)
     std::cout << log.str() << errors.str();
-  std::ostringstream summary;
-  summary << std::ifstream("output-demo/summary.json").rdbuf();
-  const std::string s = summary.str(), text = log.str();
-  const std::vector<double> u = numbers_after(s, "point_A_displacement", 2);
-  const double drag = numbers_after(s, "drag", 1)[0], lift = numbers_after(s, "lift", 1)[0];
+  // summary.json by Boost.PropertyTree (NaN where a value is missing: the verdicts say NO).
+  const double nan = std::nan("");
+  std::string status;
+  std::vector<double> u(2, nan);
+  double drag = nan, lift = nan;
+  try
+  {
+    boost::property_tree::ptree summary;
+    boost::property_tree::read_json("output-demo/summary.json", summary);
+    status = summary.get<std::string>("status");
+    drag = summary.get<double>("results.drag");
+    lift = summary.get<double>("results.lift");
+    u.clear();
+    for (const auto& component : summary.get_child("results.point_A_displacement"))
+      u.push_back(component.second.get_value<double>());
+  }
+  catch (const std::exception& e)
+  {
+    std::cout << "summary.json: " << e.what() << "\n";
+  }
+  const std::string text = log.str();
   std::ifstream history("output-demo/fsi_history.txt");
   unsigned int lines = 0;
   for (std::string line; std::getline(history, line);)
     lines += !line.empty() && line[0] != '#';
 
-  out << "exit code " << code
-      << ", status completed: " << yes_no(s.find("\"completed\"") != std::string::npos) << "\n";
+  out << "exit code " << code << ", status completed: " << yes_no(status == "completed") << "\n";
   out << "an FSI scene of 300 time steps with progress lines: "
       << yes_no(lines == 300 && (!root || text.find("FSI step 300/300") != std::string::npos))
       << "\n";
   out << "u_x(A), u_y(A) within 4% of FSI1: "
-      << yes_no(within(u[0], 2.27e-5, 0.04) && within(u[1], 8.209e-4, 0.04)) << "\n";
+      << yes_no(u.size() == 2 && within(u[0], 2.27e-5, 0.04) && within(u[1], 8.209e-4, 0.04))
+      << "\n";
   out << "drag, lift within 1.5% of FSI1: "
       << yes_no(within(drag, 14.295, 0.015) && within(lift, 0.7638, 0.015)) << "\n";
   out << "says where: fields (pvd), history plot: "
