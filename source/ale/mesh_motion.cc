@@ -274,6 +274,19 @@ namespace fvfsi
   }
 
   template <int dim>
+  void MeshMotion<dim>::checkpoint(MeshArchive<dim>& archive)
+  {
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      archive.cells(d_cell[j]);
+      for (auto& component : grad_d[j].components)
+        archive.cells(component);
+      if (archive.loading())
+        grad_d[j].update_ghost_values();
+    }
+  }
+
+  template <int dim>
   std::vector<Point<dim>> MeshMotion<dim>::vertex_positions()
   {
     const double t = clock.time();

@@ -97,8 +97,9 @@ namespace fvfsi
     void run_scene(const AllParameters& p, const std::string& prm_directory, Summary& summary)
     {
       const std::string& out = p.run.output_directory;
-      const auto run = [&summary](auto&& scene)
+      const auto run = [&summary, &p](auto&& scene)
       {
+        scene.set_checkpoints(p.run.checkpoint);
         scene.run();
         scene.write_summary(summary);
       };

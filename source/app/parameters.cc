@@ -62,6 +62,17 @@ namespace fvfsi
     prm.add_parameter(
       "Output directory", output_directory,
       "Directory for VTU/PVTU/PVD files, tables and summary.json (created if needed).");
+    prm.add_parameter("Checkpoint interval", checkpoint.interval,
+                      "Write a checkpoint every this many time steps (0: none) into "
+                      "`<Output directory>/checkpoint`, replacing the previous one: the meshes "
+                      "with their vertex positions, every field and old time level, the coupling "
+                      "state and the history files' lengths. Transient fluid, solid and FSI "
+                      "scenes.");
+    prm.add_parameter("Restart from", checkpoint.restart_from,
+                      "The Output directory of an earlier run of this .prm file: continue from "
+                      "its checkpoint (on any number of ranks) to this file's End time; the "
+                      "history files and the .pvd record continue the earlier ones. Empty: start "
+                      "from the beginning.");
     prm.add_parameter("Plot history", plot_history,
                       "true: at the end of the run, plot every *history.txt table of the output "
                       "directory as NAME.png (one panel per column over time), with the script "

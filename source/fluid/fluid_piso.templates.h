@@ -144,7 +144,7 @@ namespace fvfsi
     TimerOutput::Scope scope(timer_output, "momentum solve");
     // A u_j = B_j - V (grad p)_j, all components with one matrix.
     momentum.copy_to(momentum_matrix);
-    if (refresh_preconditioners())
+    if (refresh_preconditioners() || !momentum_solver.initialized())
       momentum_solver.initialize(momentum_matrix);
     CellVector rhs = geometry.make_cell_vector();
     for (unsigned int j = 0; j < dim; ++j)
@@ -203,7 +203,7 @@ namespace fvfsi
     if (!pressure_level_fixed && geometry.n_owned_cells() > 0 && geometry.global_index(0) == 0)
       pressure_equation.diagonal[0] *= 2;
     pressure_equation.copy_to(pressure_matrix);
-    if (refresh_preconditioners())
+    if (refresh_preconditioners() || !pressure_solver.initialized())
       pressure_solver.initialize(pressure_matrix);
   }
 

@@ -509,6 +509,40 @@ namespace fvfsi
   }
 
   template <int dim>
+  void FluidSolver<dim>::checkpoint(MeshArchive<dim>& archive)
+  {
+    // Between two time steps u = u^n, F = F^n and V = V^n (end_time_step() shifted the levels);
+    // the gradients and boundary values are those the next step's first iteration starts from.
+    for (auto* field : {&u, &u_old, &u_old2, &grad_p})
+      for (auto& component : field->components)
+        archive.cells(component);
+    for (auto& g : grad_u)
+      for (auto& component : g.components)
+        archive.cells(component);
+    archive.cells(p);
+    archive.cells(V_old);
+    archive.cells(V_old2);
+    for (auto* flux : {&F, &F_old, &F_old2, &swept_old})
+      archive.faces(*flux, Parity::odd);
+    archive.faces(S_old, Parity::odd);
+    archive.faces(S_old2, Parity::odd);
+    archive.faces(r_f_old, Parity::even);
+    archive.faces(r_f_old2, Parity::even);
+    archive.faces(boundary_u, Parity::even);
+    archive.faces(boundary_p, Parity::even);
+    if (archive.loading())
+    {
+      std::fill(swept.begin(), swept.end(), 0.0);
+      for (auto* field : {&u, &u_old, &u_old2, &grad_p})
+        field->update_ghost_values();
+      for (auto& g : grad_u)
+        g.update_ghost_values();
+      p.update_ghost_values();
+      update_volume_ratios();
+    }
+  }
+
+  template <int dim>
   void FluidSolver<dim>::add_output_fields(OutputFields<dim>& fields) const
   {
     fields.add_vector("u", [this](const unsigned int c) { return u[c]; });

@@ -2,6 +2,7 @@
 
 #include <fvfsi/io/vtu_output.h>
 
+#include <filesystem>
 #include <fstream>
 
 namespace fvfsi
@@ -40,6 +41,19 @@ namespace fvfsi
       std::ofstream pvd(directory + "/" + base_name + ".pvd");
       DataOutBase::write_pvd_record(pvd, records);
     }
+  }
+
+  template <int dim>
+  void VtuOutput<dim>::continue_from(const std::vector<std::pair<double, std::string>>& earlier,
+                                     const std::string& earlier_directory)
+  {
+    records.clear();
+    for (const auto& [time, file] : earlier)
+      records.emplace_back(
+        time, std::filesystem::absolute(earlier_directory + "/" + file)
+                .lexically_normal()
+                .lexically_relative(std::filesystem::absolute(directory).lexically_normal())
+                .string());
   }
 
   template class VtuOutput<2>;

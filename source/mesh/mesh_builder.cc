@@ -181,8 +181,9 @@ namespace fvfsi
   }
 
   template <int dim>
-  void make_mesh(const MeshParameters& params, parallel::distributed::Triangulation<dim>& tria,
-                 const std::string& prm_directory)
+  void make_coarse_mesh(const MeshParameters& params,
+                        parallel::distributed::Triangulation<dim>& tria,
+                        const std::string& prm_directory)
   {
     // The coarse mesh is built in a serial triangulation (identical on every rank), so that
     // GridTools::distort_random gives the same coarse mesh for any number of ranks.
@@ -214,6 +215,13 @@ namespace fvfsi
       GridTools::distort_random(params.distortion, coarse, true, params.distortion_seed);
     tria.copy_triangulation(coarse);
     reinitialize_transfinite_manifolds(tria);
+  }
+
+  template <int dim>
+  void make_mesh(const MeshParameters& params, parallel::distributed::Triangulation<dim>& tria,
+                 const std::string& prm_directory)
+  {
+    make_coarse_mesh(params, tria, prm_directory);
     tria.refine_global(params.n_global_refinements);
     for (const auto& cell : tria.active_cell_iterators())
       if (!cell->is_artificial())
@@ -227,6 +235,10 @@ namespace fvfsi
 
   template void make_mesh(const MeshParameters&, parallel::distributed::Triangulation<2>&,
                           const std::string&);
+  template void make_coarse_mesh(const MeshParameters&, parallel::distributed::Triangulation<2>&,
+                                 const std::string&);
+  template void make_coarse_mesh(const MeshParameters&, parallel::distributed::Triangulation<3>&,
+                                 const std::string&);
   template void make_mesh(const MeshParameters&, parallel::distributed::Triangulation<3>&,
                           const std::string&);
   template void distort_interior_vertices(parallel::distributed::Triangulation<2>&, double,

@@ -100,6 +100,36 @@ namespace fvfsi
   }
 
   template <int dim>
+  void FluidScene<dim>::checkpoint_state(MeshArchive<dim>& archive)
+  {
+    fluid->checkpoint(archive);
+    if (motion)
+      motion->checkpoint(archive);
+  }
+
+  template <int dim>
+  void FluidScene<dim>::checkpoint_state(GlobalArchive& archive)
+  {
+    archive& history_t& history_drag& history_lift& result;
+  }
+
+  template <int dim>
+  void FluidScene<dim>::restore()
+  {
+    if (!fluid_parameters.transient)
+      throw std::runtime_error("Restart from applies to transient runs (Fluid/Transient = true)");
+    if (motion)
+    {
+      const std::vector<Point<dim>> reference = fv->vertices();
+      fvfsi::move_mesh(*fv, triangulation, reference, this->restart_vertices);
+      fluid->move_mesh(std::vector<double>(fv->faces.size(), 0.0));
+      probes.locate(*fv);
+    }
+    this->restore_checkpoint([this](MeshArchive<dim>& a) { checkpoint_state(a); },
+                             [this](GlobalArchive& a) { checkpoint_state(a); });
+  }
+
+  template <int dim>
   void FluidScene<dim>::move_mesh()
   {
     const std::vector<Point<dim>> x = motion->vertex_positions();
@@ -187,11 +217,16 @@ namespace fvfsi
   void FluidScene<dim>::run()
   {
     make_grid();
+    if (this->restarting())
+      restore();
     pcout << "fvfsi: fluid " << dim << "D, " << fv->n_global_cells() << " cells, "
           << (fluid_parameters.transient ? "transient (PISO, BDF2)" : "steady (pseudo-transient)")
           << (motion ? ", moving mesh" : "") << "\n";
     if (!fluid_parameters.transient)
     {
+      if (this->checkpoints.interval > 0)
+        throw std::runtime_error("Checkpoint interval applies to transient runs (Fluid/Transient "
+                                 "= true)");
       fluid->begin_time_step();
       result.n_time_steps = fluid->solve_steady();
       record_time_history();
@@ -213,7 +248,7 @@ namespace fvfsi
   void FluidScene<dim>::run_transient()
   {
     const unsigned int total = clock.n_steps();
-    for (unsigned int step = 1; step <= total; ++step)
+    for (unsigned int step = clock.step() + 1; step <= total; ++step)
     {
       try
       {
@@ -239,6 +274,9 @@ namespace fvfsi
               << "\n";
       if (this->output_due(step))
         this->write_output(*fluid);
+      if (this->checkpoint_due(step))
+        this->write_checkpoint([this](MeshArchive<dim>& a) { checkpoint_state(a); },
+                               [this](GlobalArchive& a) { checkpoint_state(a); });
     }
     if (scene_parameters.output_interval == 0)
       this->write_output(*fluid);

@@ -56,7 +56,18 @@ namespace fvfsi
   template <int dim>
   void FsiScene<dim>::make_grids()
   {
-    make_mesh(fluid_mesh_parameters, fluid_tria, prm_directory);
+    // Restarting: the meshes as saved (refinement, partition for this number of ranks, vertex
+    // positions) instead of the .prm's refinement; the fluid mesh at its reference positions
+    // first (the interface maps are made there), moved later by restore_checkpoint().
+    const CheckpointFiles restart(checkpoints.restart_from);
+    if (!checkpoints.restart_from.empty())
+    {
+      restart.check_readable("Restart from");
+      fluid_restart = load_mesh(restart, "fluid_mesh", fluid_mesh_parameters, fluid_tria,
+                                prm_directory, restart_vertices);
+    }
+    else
+      make_mesh(fluid_mesh_parameters, fluid_tria, prm_directory);
     fluid_fv = std::make_unique<FVGeometry<dim>>(fluid_tria);
     fluid_reference_fv = std::make_unique<FVGeometry<dim>>(fluid_tria);
     fluid =
@@ -64,7 +75,12 @@ namespace fvfsi
     motion = std::make_unique<MeshMotion<dim>>(*fluid_reference_fv, fluid_mesh_parameters,
                                                fluid_scene_parameters.mesh_motion, clock);
 
-    make_mesh(solid_mesh_parameters, solid_tria, prm_directory);
+    std::vector<Point<dim>> solid_vertices;
+    if (!checkpoints.restart_from.empty())
+      solid_restart = load_mesh(restart, "solid_mesh", solid_mesh_parameters, solid_tria,
+                                prm_directory, solid_vertices);
+    else
+      make_mesh(solid_mesh_parameters, solid_tria, prm_directory);
     solid_fv = std::make_unique<FVGeometry<dim>>(solid_tria);
     solid =
       std::make_unique<SolidSolver<dim>>(*solid_fv, solid_mesh_parameters, solid_parameters, clock);
@@ -108,8 +124,78 @@ namespace fvfsi
       for (const auto& c : vector_columns<dim>("u", "_" + probes.name(i)))
         columns.push_back(c);
     columns.push_back("min_volume_ratio"); // min over the fluid cells of V_P / V_P(reference)
-    history = std::make_unique<HistoryFile>(
-      output_directory + (steady ? "/fsi_steady_history.txt" : "/fsi_history.txt"), columns, comm);
+    const std::string name = steady ? "/fsi_steady_history.txt" : "/fsi_history.txt";
+    if (checkpoints.restart_from.empty())
+      history = std::make_unique<HistoryFile>(output_directory + name, columns, comm);
+    else
+    {
+      const OutputState earlier =
+        load_output_state(CheckpointFiles(checkpoints.restart_from), comm);
+      history =
+        std::make_unique<HistoryFile>(output_directory + name, columns, comm,
+                                      checkpoints.restart_from + name, earlier.history_length);
+      fluid_output->continue_from(earlier.series.at(0), checkpoints.restart_from);
+      solid_output->continue_from(earlier.series.at(1), checkpoints.restart_from);
+    }
+  }
+
+  template <int dim>
+  template <class Archive>
+  void FsiScene<dim>::global_state(Archive& archive)
+  {
+    archive& clock& d& d_old& d_older&* acceleration& result& volume_ratio;
+    bool has_force = last_force.has_value();
+    Tensor<1, dim> force = last_force.value_or(Tensor<1, dim>());
+    archive& has_force& force;
+    if (has_force)
+      last_force = force;
+  }
+
+  template <int dim>
+  void FsiScene<dim>::write_checkpoint()
+  {
+    TimerOutput::Scope scope(timer, "checkpoint");
+    const CheckpointFiles files(output_directory);
+    files.begin_writing(comm);
+    // The same calls in the same order as restore_checkpoint()'s.
+    save_mesh<dim>(files, "fluid_mesh", *fluid_fv, fluid_reference_fv->vertices(),
+                   [this](MeshArchive<dim>& archive)
+                   {
+                     fluid->checkpoint(archive);
+                     motion->checkpoint(archive);
+                   });
+    save_mesh<dim>(files, "solid_mesh", *solid_fv, solid_fv->vertices(),
+                   [this](MeshArchive<dim>& archive) { solid->checkpoint(archive); });
+    {
+      GlobalArchive global(files.path("state", true), false, comm);
+      global_state(global);
+    }
+    save_output_state(
+      files, {history->length(), {fluid_output->written(), solid_output->written()}}, comm);
+    files.finish_writing(comm);
+    pcout << "fvfsi: checkpoint at " << clock.step_name() << " in " << files.directory << "\n";
+  }
+
+  template <int dim>
+  void FsiScene<dim>::restore_checkpoint()
+  {
+    // The fluid mesh moves from its reference positions to the saved ones (its geometry, the
+    // triangulation, and the fluid's operators with it), then every state is read in the order
+    // write_checkpoint() wrote it.
+    const CheckpointFiles files(checkpoints.restart_from);
+    const std::vector<Point<dim>> reference = fluid_fv->vertices();
+    move_mesh(*fluid_fv, fluid_tria, reference, restart_vertices);
+    fluid->move_mesh(std::vector<double>(fluid_fv->faces.size(), 0.0));
+    fluid_restart->set_geometry(*fluid_fv);
+    fluid->checkpoint(*fluid_restart);
+    motion->checkpoint(*fluid_restart);
+    solid_restart->set_geometry(*solid_fv);
+    solid->checkpoint(*solid_restart);
+    fluid_restart.reset();
+    solid_restart.reset();
+    GlobalArchive global(files.path("state"), true, comm);
+    global_state(global);
+    pcout << "fvfsi: FSI restarted from " << files.directory << " at " << clock.step_name() << "\n";
   }
 
   template <int dim>
@@ -342,6 +428,8 @@ namespace fvfsi
   {
     make_grids();
     make_interface();
+    if (!checkpoints.restart_from.empty())
+      restore_checkpoint();
     make_output();
     pcout << "fvfsi: FSI " << dim << "D, fluid " << fluid_fv->n_global_cells() << " cells, solid "
           << solid_fv->n_global_cells() << " cells ("
@@ -351,6 +439,9 @@ namespace fvfsi
           << selection_name(CouplingParameters::method_names, prm.coupling.method) << "\n";
     if (steady)
     {
+      if (checkpoints.interval > 0 || !checkpoints.restart_from.empty())
+        throw std::runtime_error("FSI: Checkpoint interval and Restart from apply to transient "
+                                 "runs; a steady run (Fluid/Transient = false) has no time steps");
       result.total_coupling_iterations = result.max_coupling_iterations = solve_steady();
       pcout << "fvfsi: FSI steady state after " << result.total_coupling_iterations
             << " coupling iterations, " << fluid->pseudo_steps() << " fluid pseudo steps, "
@@ -363,7 +454,10 @@ namespace fvfsi
     const auto last_fluid_alone_step = static_cast<unsigned int>(
       std::min<double>(total, std::floor(prm.coupling.start_time / clock.time_step() + 1e-9)));
     Progress progress;
-    for (unsigned int step = 1; step <= total; ++step)
+    const unsigned int first_step = clock.step() + 1; // 1, or the one after a checkpoint
+    if (result.n_coupled_steps > 0)
+      progress.new_phase(clock.step());
+    for (unsigned int step = first_step; step <= total; ++step)
     {
       unsigned int iterations = 0;
       Timer step_timer;
@@ -403,6 +497,8 @@ namespace fvfsi
       if (fluid_scene_parameters.output_interval > 0 &&
           step % fluid_scene_parameters.output_interval == 0)
         output_results();
+      if (checkpoints.interval > 0 && step % checkpoints.interval == 0)
+        write_checkpoint();
     }
     if (fluid_scene_parameters.output_interval == 0)
       output_results();

@@ -39,8 +39,17 @@ namespace fvfsi
   template <int dim>
   void SingleMeshScene<dim>::make_mesh_and_writer(const std::string& output_name)
   {
-    make_mesh(mesh_parameters, triangulation, prm_directory);
+    if (restarting())
+    {
+      const CheckpointFiles restart(checkpoints.restart_from);
+      restart.check_readable("Restart from");
+      restart_archive =
+        load_mesh(restart, "mesh", mesh_parameters, triangulation, prm_directory, restart_vertices);
+    }
+    else
+      make_mesh(mesh_parameters, triangulation, prm_directory);
     fv = std::make_unique<FVGeometry<dim>>(triangulation);
+    reference_vertices = fv->vertices();
     probes.locate(*fv);
     vtu_output = std::make_unique<VtuOutput<dim>>(*fv, output_directory, output_name);
   }
@@ -49,7 +58,16 @@ namespace fvfsi
   void SingleMeshScene<dim>::open_history(const std::string& file_name,
                                           const std::vector<std::string>& columns)
   {
-    history = std::make_unique<HistoryFile>(output_directory + "/" + file_name, columns, comm);
+    if (!restarting())
+    {
+      history = std::make_unique<HistoryFile>(output_directory + "/" + file_name, columns, comm);
+      return;
+    }
+    const OutputState earlier = load_output_state(CheckpointFiles(checkpoints.restart_from), comm);
+    history = std::make_unique<HistoryFile>(output_directory + "/" + file_name, columns, comm,
+                                            checkpoints.restart_from + "/" + file_name,
+                                            earlier.history_length);
+    vtu_output->continue_from(earlier.series.at(0), checkpoints.restart_from);
   }
 
   template <int dim>

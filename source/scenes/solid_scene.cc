@@ -136,7 +136,14 @@ namespace fvfsi
           << selection_name(SolidParameters::variant_names, solid_parameters.variant) << "\n";
     // Steady: one solve (at t = dt, for loads that depend on t).
     const unsigned int n_steps = solid_parameters.transient ? clock.n_steps() : 1;
-    for (unsigned int step = 1; step <= n_steps; ++step)
+    const auto mesh_state = [this](MeshArchive<dim>& a) { solid->checkpoint(a); };
+    const auto global_state = [this](GlobalArchive& a) { a& result; };
+    if (!solid_parameters.transient && (this->restarting() || this->checkpoints.interval > 0))
+      throw std::runtime_error("Checkpoint interval and Restart from apply to transient runs "
+                               "(Solid/Transient = true)");
+    if (this->restarting())
+      this->restore_checkpoint(mesh_state, global_state);
+    for (unsigned int step = clock.step() + 1; step <= n_steps; ++step)
     {
       clock.advance();
       solid->solve_time_step();
@@ -149,6 +156,8 @@ namespace fvfsi
               << " s, " << iterations << " outer iterations\n";
       if (this->output_due(step))
         this->write_output(*solid);
+      if (this->checkpoint_due(step))
+        this->write_checkpoint(mesh_state, global_state);
     }
     if (scene_parameters.output_interval == 0)
       this->write_output(*solid);

@@ -340,6 +340,47 @@ namespace fvfsi
   }
 
   template <int dim>
+  void SolidSolver<dim>::checkpoint(MeshArchive<dim>& archive)
+  {
+    // Everything the next step's first outer iteration reads: u and the levels of u and v; the
+    // boundary values, vertex values and gradients of u (iterated, not functions of u alone); the
+    // Hessians and their terms (present variant with the Hessian correction).
+    for (auto* field : {&u, &u_old, &u_old2, &v_old, &v_old2})
+      for (auto& component : field->components)
+        archive.cells(component);
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      for (auto& component : grad_u[j].components)
+        archive.cells(component);
+      archive.vertices(vertex_u[j]);
+    }
+    archive.faces(boundary_u, Parity::even);
+    archive.faces(boundary_G, Parity::even);
+    if (cell_hessian)
+    {
+      archive.faces(boundary_g_n, Parity::odd);
+      for (unsigned int j = 0; j < dim; ++j)
+      {
+        for (auto& component : hessian[j].components)
+          archive.cells(component);
+        archive.vertices(vertex_quadratic_term[j]);
+      }
+      archive.faces(boundary_quadratic_term, Parity::even);
+    }
+    if (archive.loading())
+    {
+      for (auto* field : {&u, &u_old, &u_old2, &v_old, &v_old2})
+        field->update_ghost_values();
+      for (unsigned int j = 0; j < dim; ++j)
+      {
+        grad_u[j].update_ghost_values();
+        if (cell_hessian)
+          hessian[j].update_ghost_values();
+      }
+    }
+  }
+
+  template <int dim>
   void SolidSolver<dim>::add_output_fields(OutputFields<dim>& fields) const
   {
     fields.add_vector("u", [this](const unsigned int c) { return u[c]; });

@@ -36,6 +36,7 @@
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/linear_solver.h>
 #include <fvfsi/fv/vertex_interpolation.h>
+#include <fvfsi/io/checkpoint.h>
 #include <fvfsi/mesh/fv_geometry.h>
 #include <fvfsi/mesh/mesh_parameters.h>
 
@@ -103,6 +104,10 @@ namespace fvfsi
     /// The vertex positions at the clock's time (indexed like the triangulation's vertices;
     /// vertices of no locally relevant cell stay where they are).
     std::vector<dealii::Point<dim>> vertex_positions();
+
+    /// Save or load the last solve's cell displacements and their gradients (the next solve
+    /// starts from them); see io/checkpoint.h.
+    void checkpoint(MeshArchive<dim>& archive);
 
     /// Linear iterations of the last Laplace solve (all components and corrections).
     unsigned int last_linear_iterations() const { return linear_iterations; }

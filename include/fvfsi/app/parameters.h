@@ -32,6 +32,7 @@ namespace fvfsi
     Scene scene = Scene::poisson;
     std::string output_directory = "output";
     bool plot_history = false; ///< plot the history tables as PNG at the end
+    CheckpointParameters checkpoint;
     void declare(dealii::ParameterHandler& prm);
   };
 

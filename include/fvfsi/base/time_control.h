@@ -81,6 +81,15 @@ namespace fvfsi
     /// "time step N (t = T s)", for messages.
     std::string step_name() const;
 
+    /// Save or load the clock's state for a checkpoint (Boost serialization): the time, the
+    /// steps and the step number; the end time stays the one of the .prm file, so that a restart
+    /// can run further than the run it continues.
+    template <class Archive>
+    void serialize(Archive& ar, const unsigned int /*version*/)
+    {
+      ar& t& dt& dt_old& next_dt& step_number;
+    }
+
   private:
     double t = 0, dt, dt_old = 0, next_dt, end;
     unsigned int step_number = 0;

@@ -99,6 +99,15 @@ namespace fvfsi
     /// IQN-IMVJ: the inverse Jacobian of the earlier time steps.
     const MultiVectorJacobian& inverse_jacobian() const { return jacobian; }
 
+    /// Save or load the state kept between time steps (a checkpoint; Boost serialization): the
+    /// IQN-ILS columns kept for reuse and the IQN-IMVJ Jacobian among it.
+    template <class Archive>
+    void serialize(Archive& ar, const unsigned int /*version*/)
+    {
+      ar& iteration& omega& previous_r& previous_d_tilde& model& jacobian& time_step&
+        last_relative_residual& last_residual& largest_residual;
+    }
+
   private:
     CouplingParameters prm;
     unsigned int iteration = 0; ///< within the time step

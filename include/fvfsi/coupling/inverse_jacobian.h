@@ -34,6 +34,9 @@
 
 #include <deal.II/lac/full_matrix.h>
 
+#include <boost/serialization/deque.hpp>
+#include <boost/serialization/vector.hpp>
+
 #include <fvfsi/coupling/interface_zone.h>
 
 #include <deque>
@@ -61,10 +64,22 @@ namespace fvfsi
     void update(const std::vector<InterfaceVector>& dR, const std::vector<InterfaceVector>& dX,
                 const std::vector<InterfaceVector>& Z);
 
+    /// Save or load J (a checkpoint of the coupling; Boost serialization).
+    template <class Archive>
+    void serialize(Archive& ar, const unsigned int /*version*/)
+    {
+      ar& n_updates& dense& J& steps;
+    }
+
   private:
     struct Step
     {
       std::vector<InterfaceVector> V, W, Z, W_tilde;
+      template <class Archive>
+      void serialize(Archive& ar, const unsigned int /*version*/)
+      {
+        ar& V& W& Z& W_tilde;
+      }
     };
     /// y = sum over the first `n_steps` terms of the window of Wt_k (Z_k . x).
     void apply_steps(const unsigned int n_steps, InterfaceVector& y,

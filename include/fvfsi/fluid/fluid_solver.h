@@ -82,6 +82,7 @@
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/linear_solver.h>
 #include <fvfsi/fv/vertex_interpolation.h>
+#include <fvfsi/io/checkpoint.h>
 #include <fvfsi/io/vtu_output.h>
 #include <fvfsi/mesh/fv_geometry.h>
 #include <fvfsi/mesh/mesh_parameters.h>
@@ -165,6 +166,10 @@ namespace fvfsi
     /// Velocity u [m/s], pressure p [Pa] and vorticity [1/s] (2D: dv/dx - du/dy; 3D: its
     /// magnitude) as output fields.
     void add_output_fields(OutputFields<dim>& fields) const;
+    /// Save or load the state a transient run continues from between two time steps (the time
+    /// levels of u, p, the fluxes and the moving mesh's old geometry; the lagged gradients and
+    /// boundary values); see io/checkpoint.h.
+    void checkpoint(MeshArchive<dim>& archive);
     /// The pressure's linear solver (for its solve and iteration counts).
     const LinearSolver& pressure_linear_solver() const { return pressure_solver; }
     /// Wall time per part of the algorithm, for the run's log.

@@ -22,6 +22,8 @@
 #include <deal.II/lac/qr.h>
 #include <deal.II/lac/vector.h>
 
+#include <boost/serialization/deque.hpp>
+
 #include <deque>
 #include <vector>
 
@@ -112,11 +114,23 @@ namespace fvfsi
       return s;
     }
 
+    /// Save or load the columns (a checkpoint of the coupling; Boost serialization).
+    template <class Archive>
+    void serialize(Archive& ar, const unsigned int /*version*/)
+    {
+      ar& columns& used;
+    }
+
   private:
     struct Columns
     {
       VectorType dR, dX;
       unsigned int tag;
+      template <class Archive>
+      void serialize(Archive& ar, const unsigned int /*version*/)
+      {
+        ar& dR& dX& tag;
+      }
     };
     /// Append the columns newest first to `qr`, leaving out the ones the filter rejects; the
     /// kept ones, in the order of qr's columns (sets `used`).

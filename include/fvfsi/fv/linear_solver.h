@@ -61,6 +61,8 @@ namespace fvfsi
                        const CellVector& b, const std::string& what, double reduction = -1);
 
     /// Number of solve() calls and their Krylov iterations so far.
+    /// Whether initialize() has built a preconditioner (a restarted run has none yet).
+    bool initialized() const { return preconditioner != nullptr; }
     unsigned long n_solves() const { return solve_count; }
     unsigned long n_iterations() const { return iteration_count; }
 

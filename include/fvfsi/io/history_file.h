@@ -6,6 +6,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/tensor.h>
 
+#include <cstdint>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -38,6 +39,14 @@ namespace fvfsi
     /// Create (truncate) `file_name` and write the header of `columns` (rank 0 of `comm`).
     HistoryFile(const std::string& file_name, const std::vector<std::string>& columns,
                 MPI_Comm comm);
+
+    /// Restarting: `file_name` continues the first `length` bytes of `earlier_file` (the
+    /// checkpoint's length of the history the restarted run wrote; the two may be one file).
+    HistoryFile(const std::string& file_name, const std::vector<std::string>& columns,
+                MPI_Comm comm, const std::string& earlier_file, std::uint64_t length);
+
+    /// Bytes written so far (rank 0; 0 on the other ranks): the length a checkpoint records.
+    std::uint64_t length() { return out.is_open() ? std::uint64_t(out.tellp()) : 0; }
 
     /// Append one line (as many values as columns; rank 0 writes, the others ignore it).
     void write_line(const std::vector<double>& values);

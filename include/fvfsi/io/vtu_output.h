@@ -58,6 +58,10 @@ namespace fvfsi
 
     /// The steps written so far: (time, .pvtu file name).
     const std::vector<std::pair<double, std::string>>& written() const { return records; }
+    /// Restarting: the steps an earlier run wrote into `earlier_directory` come first in the
+    /// .pvd record (their file names made relative to this writer's directory).
+    void continue_from(const std::vector<std::pair<double, std::string>>& earlier,
+                       const std::string& earlier_directory);
 
   private:
     const FVGeometry<dim>& geometry;

@@ -21,6 +21,15 @@ namespace fvfsi
                  const std::string& prm_directory = ".");
 
   /**
+   * The coarse mesh of `params` alone (make_mesh() before its refinement and interior distortion):
+   * what parallel::distributed::Triangulation::load() needs to read a checkpoint's mesh.
+   */
+  template <int dim>
+  void make_coarse_mesh(const MeshParameters& params,
+                        dealii::parallel::distributed::Triangulation<dim>& tria,
+                        const std::string& prm_directory = ".");
+
+  /**
    * Shift every interior vertex by `factor` times its shortest adjacent edge, in a random direction.
    * This is GridTools::distort_random's rule, but the random numbers are hashed from the vertex's
    * coordinates instead of drawn in rank-local vertex order, so every rank, and every number of

@@ -56,6 +56,11 @@ namespace fvfsi
     unsigned int n_time_steps = 0; ///< time steps, or pseudo time steps of a steady run
     /// Moving meshes: min over cells and time steps of V_P / V_P(reference).
     double min_volume_ratio = 1;
+    template <class Archive>
+    void serialize(Archive& ar, const unsigned int /*version*/)
+    {
+      ar& n_time_steps& min_volume_ratio;
+    }
   };
 
   template <int dim>
@@ -84,6 +89,11 @@ namespace fvfsi
       Base::probes, Base::triangulation, Base::vtu_output;
 
     void make_grid();
+    /// Checkpoints: the fluid's and the mesh motion's states, the force histories so far.
+    void checkpoint_state(MeshArchive<dim>& archive);
+    void checkpoint_state(GlobalArchive& archive);
+    /// Restarting: the mesh moves to where it was, then the states are read.
+    void restore();
     void run_transient();
     /// Moves the mesh to its position at the clock's time: vertices (also those of the
     /// triangulation, so that the VTU output shows the moved mesh), geometry, mesh fluxes.

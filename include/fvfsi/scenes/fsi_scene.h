@@ -31,6 +31,7 @@
 #include <fvfsi/coupling/vertex_projection.h>
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/fv/point_probes.h>
+#include <fvfsi/io/checkpoint.h>
 #include <fvfsi/io/history_file.h>
 #include <fvfsi/io/summary.h>
 #include <fvfsi/io/vtu_output.h>
@@ -65,6 +66,12 @@ namespace fvfsi
     }
     double min_volume_ratio = 1;     ///< min over cells and steps of V_P / V_P(reference), fluid
     double coupled_wall_seconds = 0; ///< wall time of the coupled time steps [s]
+    template <class Archive>
+    void serialize(Archive& ar, const unsigned int /*version*/)
+    {
+      ar& n_time_steps& n_coupled_steps& total_coupling_iterations& max_coupling_iterations&
+        solid_outer_iterations& min_volume_ratio& coupled_wall_seconds;
+    }
   };
 
   /// The parameters an FSI scene reads.
@@ -86,6 +93,8 @@ namespace fvfsi
     FsiScene(const FsiSceneInput& input, MPI_Comm comm, const std::string& prm_directory,
              const std::string& output_directory);
 
+    /// Write a checkpoint every `interval` time steps; continue from `restart_from`'s checkpoint.
+    void set_checkpoints(const CheckpointParameters& parameters) { checkpoints = parameters; }
     void run();
     void write_summary(Summary& summary) const;
     const FsiResults& results() const { return result; }
@@ -101,9 +110,19 @@ namespace fvfsi
     const PointProbes<dim>& solid_probes() const { return probes; }
 
   private:
+    /// The meshes (from the checkpoint when restarting), their geometry and the solvers.
     void make_grids();
     void make_interface();
     void make_output();
+    /// Checkpoints (io/checkpoint.h): the fluid mesh with its reference and current vertex
+    /// positions, the fluid, mesh-motion and solid states, and the clock, the interface
+    /// displacements, the coupling's columns, the results so far and the output records.
+    void write_checkpoint();
+    /// Restarting: the states of the solvers, after make_grids() and make_interface().
+    void restore_checkpoint();
+    /// The part of a checkpoint every rank holds alike.
+    template <class Archive>
+    void global_state(Archive& archive);
     /// One time step of Algorithm 1; returns the coupling iterations.
     unsigned int solve_time_step();
     /// Step 2 of Algorithm 1: coupling iterations from d until the interface residual is below
@@ -159,6 +178,12 @@ namespace fvfsi
     std::vector<dealii::Point<dim>> vertices_old; ///< fluid vertex positions at t^n
     /// Interface displacement at the fluid interface vertices at t^(n+1), t^n, t^(n-1) [m].
     InterfaceVector d, d_old, d_older;
+    CheckpointParameters checkpoints;
+    /// Restarting: the checkpoint's meshes and records between make_grids() and
+    /// restore_checkpoint(), and the fluid vertex positions saved.
+    std::unique_ptr<MeshArchive<dim>> fluid_restart, solid_restart;
+    std::vector<dealii::Point<dim>> restart_vertices;
+
     std::optional<dealii::Tensor<1, dim>> last_force; ///< fluid_force() of the last record
     double volume_ratio = 1; ///< min over the fluid cells of V_P / V_P(reference), now
     FsiResults result;

@@ -11,6 +11,7 @@
 #include <fvfsi/base/parsed_function.h>
 #include <fvfsi/base/time_control.h>
 #include <fvfsi/fv/point_probes.h>
+#include <fvfsi/io/checkpoint.h>
 #include <fvfsi/io/history_file.h>
 #include <fvfsi/io/vtu_output.h>
 #include <fvfsi/mesh/fv_geometry.h>
@@ -53,6 +54,8 @@ namespace fvfsi
   public:
     const FVGeometry<dim>& geometry() const { return *fv; }
     const TimeControl& time() const { return clock; }
+    /// Write a checkpoint every `interval` time steps; continue from `restart_from`'s checkpoint.
+    void set_checkpoints(const CheckpointParameters& parameters) { checkpoints = parameters; }
 
   protected:
     /// `probe_parameter` names the probes' .prm entry in messages.
@@ -61,10 +64,25 @@ namespace fvfsi
                     MPI_Comm comm, const std::string& prm_directory,
                     const std::string& output_directory);
 
-    /// The mesh of `Mesh`, its FV geometry, and the VTU writer `<output_name>.pvd`.
+    /// The mesh of `Mesh` (restarting: the checkpoint's, at its reference positions), its FV
+    /// geometry, and the VTU writer `<output_name>.pvd`.
     void make_mesh_and_writer(const std::string& output_name);
-    /// Create `<output directory>/<file_name>` with the given columns.
+    /// Create `<output directory>/<file_name>` with the given columns (restarting: continue the
+    /// earlier run's file and .pvd record).
     void open_history(const std::string& file_name, const std::vector<std::string>& columns);
+
+    bool restarting() const { return !checkpoints.restart_from.empty(); }
+    bool checkpoint_due(const unsigned int step) const
+    {
+      return checkpoints.interval > 0 && step % checkpoints.interval == 0;
+    }
+    /// Write a checkpoint (io/checkpoint.h): the mesh with what `mesh_state(MeshArchive&)` adds
+    /// (the solvers' checkpoint()), and the clock with what `global_state(GlobalArchive&)` adds.
+    template <typename MeshState, typename GlobalState>
+    void write_checkpoint(const MeshState& mesh_state, const GlobalState& global_state);
+    /// Restarting, once the solvers are made on the geometry: the same calls, reading.
+    template <typename MeshState, typename GlobalState>
+    void restore_checkpoint(const MeshState& mesh_state, const GlobalState& global_state);
     /// True if a progress line or VTU output is due after time step `step` of `n_steps`.
     bool progress_due(unsigned int step, unsigned int n_steps) const;
     bool output_due(unsigned int step) const;
@@ -96,7 +114,45 @@ namespace fvfsi
     PointProbes<dim> probes;
     std::unique_ptr<VtuOutput<dim>> vtu_output;
     std::unique_ptr<HistoryFile> history;
+    CheckpointParameters checkpoints;
+    /// The vertex positions the mesh was made with; restarting, also those it had at the
+    /// checkpoint, and its records until restore_checkpoint() reads them.
+    std::vector<dealii::Point<dim>> reference_vertices, restart_vertices;
+    std::unique_ptr<MeshArchive<dim>> restart_archive;
   };
+
+  template <int dim>
+  template <typename MeshState, typename GlobalState>
+  void SingleMeshScene<dim>::write_checkpoint(const MeshState& mesh_state,
+                                              const GlobalState& global_state)
+  {
+    const CheckpointFiles files(output_directory);
+    files.begin_writing(comm);
+    save_mesh<dim>(files, "mesh", *fv, reference_vertices, mesh_state);
+    {
+      GlobalArchive global(files.path("state", true), false, comm);
+      global& clock;
+      global_state(global);
+    }
+    save_output_state(files, {history->length(), {vtu_output->written()}}, comm);
+    files.finish_writing(comm);
+    pcout << "fvfsi: checkpoint at " << clock.step_name() << " in " << files.directory << "\n";
+  }
+
+  template <int dim>
+  template <typename MeshState, typename GlobalState>
+  void SingleMeshScene<dim>::restore_checkpoint(const MeshState& mesh_state,
+                                                const GlobalState& global_state)
+  {
+    const CheckpointFiles files(checkpoints.restart_from);
+    restart_archive->set_geometry(*fv);
+    mesh_state(*restart_archive);
+    restart_archive.reset();
+    GlobalArchive global(files.path("state"), true, comm);
+    global& clock;
+    global_state(global);
+    pcout << "fvfsi: restarted from " << files.directory << " at " << clock.step_name() << "\n";
+  }
 
   template <int dim>
   template <typename Value>

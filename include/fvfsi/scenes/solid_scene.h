@@ -38,6 +38,11 @@ namespace fvfsi
     std::vector<std::pair<std::string, dealii::Tensor<1, 3>>> probe_displacement; ///< final values
     unsigned int total_outer_iterations = 0;
     unsigned int n_time_steps = 0;
+    template <class Archive>
+    void serialize(Archive& ar, const unsigned int /*version*/)
+    {
+      ar& total_outer_iterations& n_time_steps;
+    }
   };
 
   template <int dim>

@@ -46,6 +46,7 @@
 #include <fvfsi/fv/probed_jacobian.h>
 #include <fvfsi/fv/quadratic_fit.h>
 #include <fvfsi/fv/vertex_interpolation.h>
+#include <fvfsi/io/checkpoint.h>
 #include <fvfsi/io/vtu_output.h>
 #include <fvfsi/mesh/fv_geometry.h>
 #include <fvfsi/mesh/mesh_parameters.h>
@@ -117,6 +118,10 @@ namespace fvfsi
     /// Displacement u [m], Cauchy stress components sigma_ij [Pa] and the von Mises stress [Pa]
     /// (2D: of the in-plane stress) as output fields.
     void add_output_fields(OutputFields<dim>& fields) const;
+    /// Save or load the state a run continues from between two time steps (the time levels of
+    /// u and v, the boundary values and gradients the outer iterations start from); see
+    /// io/checkpoint.h.
+    void checkpoint(MeshArchive<dim>& archive);
 
     /// Cauchy traction [Pa] on the faces of `external traction` patches, indexed like
     /// FVGeometry::faces (entries of other faces are ignored).

@@ -1,0 +1,383 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/cell_data_transfer.h>
+// CellDataTransfer is instantiated in deal.II for Vector<double> only: records of variable size
+// need its templates.
+#include <deal.II/distributed/cell_data_transfer.templates.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <fvfsi/io/checkpoint.h>
+#include <fvfsi/mesh/mesh_builder.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace fvfsi
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// One record of numbers per active cell.
+    using Records = std::vector<std::vector<double>>;
+  } // namespace
+
+  template <int dim>
+  MeshArchive<dim>::MeshArchive(const parallel::distributed::Triangulation<dim>& tria)
+      : tria(tria), is_loading(false), records(tria.n_active_cells())
+  {
+  }
+
+  template <int dim>
+  MeshArchive<dim>::MeshArchive(parallel::distributed::Triangulation<dim>& mesh,
+                                const std::string& file)
+      : tria(mesh), is_loading(true)
+  {
+    if (mesh.n_levels() != 1)
+      throw std::logic_error("MeshArchive: load onto a coarse mesh");
+    try
+    {
+      mesh.load(file);
+    }
+    catch (const std::exception& e)
+    {
+      throw std::runtime_error(
+        "cannot read the checkpoint mesh `" + file +
+        "` (was it written with this .prm file's Mesh settings?): " + e.what());
+    }
+    records.resize(mesh.n_active_cells());
+    parallel::distributed::CellDataTransfer<dim, dim, Records> transfer(mesh, true);
+    transfer.deserialize(records);
+    // The ghost cells' records from their owners: faces of ghost cells (boundary faces) and the
+    // vertices of ghost cells are read from them.
+    using Cell = typename parallel::distributed::Triangulation<dim>::active_cell_iterator;
+    GridTools::exchange_cell_data_to_ghosts<std::vector<double>,
+                                            parallel::distributed::Triangulation<dim>>(
+      mesh,
+      [this](const Cell& cell)
+      { return std_cxx17::optional<std::vector<double>>(records[cell->active_cell_index()]); },
+      [this](const Cell& cell, const std::vector<double>& r)
+      { records[cell->active_cell_index()] = r; });
+  }
+
+  template <int dim>
+  void MeshArchive<dim>::set_geometry(const FVGeometry<dim>& g)
+  {
+    geometry = &g;
+    if (!is_loading)
+      map_faces();
+  }
+
+  template <int dim>
+  void MeshArchive<dim>::map_faces()
+  {
+    face_of_cell.assign(geometry->n_relevant_cells(), {});
+    for (auto& cell : face_of_cell)
+      cell.fill({invalid_cell, 0});
+    for (unsigned int f = 0; f < geometry->faces.size(); ++f)
+    {
+      const auto& face = geometry->faces[f];
+      face_of_cell[face.P][face.face_no] = {f, +1};
+      if (face.kind == FaceKind::interior)
+        face_of_cell[face.N][geometry->cell(face.P)->neighbor_of_neighbor(face.face_no)] = {f, -1};
+    }
+  }
+
+  template <int dim>
+  std::vector<double>& MeshArchive<dim>::record(const unsigned int c)
+  {
+    return records[geometry->cell(c)->active_cell_index()];
+  }
+
+  template <int dim>
+  const double* MeshArchive<dim>::read(const unsigned int c) const
+  {
+    const auto& r = records[geometry->cell(c)->active_cell_index()];
+    if (r.size() <= offset)
+      throw std::runtime_error("the checkpoint holds less data per cell than this run reads "
+                               "(written by another version of fvfsi or another kind of scene?)");
+    return r.data() + offset;
+  }
+
+  template <int dim>
+  template <typename Get, typename Set>
+  void MeshArchive<dim>::vertex_values(const unsigned int n, const Get& get, const Set& set)
+  {
+    // Every cell stores the values at its vertices; loading, every owned and ghost cell sets them
+    // (a vertex shared by cells gets the same value from each).
+    constexpr unsigned int per_cell = GeometryInfo<dim>::vertices_per_cell;
+    for (const auto& cell : tria.active_cell_iterators())
+    {
+      auto& r = records[cell->active_cell_index()];
+      if (!is_loading && cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int k = 0; k < n; ++k)
+            r.push_back(get(cell->vertex_index(v), k));
+      if (is_loading && (cell->is_locally_owned() || cell->is_ghost()))
+      {
+        if (r.size() < offset + per_cell * n)
+          throw std::runtime_error("the checkpoint holds less data per cell than this run reads");
+        for (const unsigned int v : cell->vertex_indices())
+          set(cell->vertex_index(v), &r[offset + v * n]);
+      }
+    }
+    advance(per_cell * n);
+  }
+
+  template <int dim>
+  void MeshArchive<dim>::vertices(std::vector<Point<dim>>& x)
+  {
+    if (is_loading)
+      x.resize(tria.n_vertices());
+    vertex_values(
+      dim, [&](const unsigned int v, const unsigned int k) { return x[v][k]; },
+      [&](const unsigned int v, const double* values)
+      {
+        for (unsigned int k = 0; k < dim; ++k)
+          x[v][k] = values[k];
+      });
+  }
+
+  template <int dim>
+  void MeshArchive<dim>::vertices(std::vector<double>& x)
+  {
+    if (x.size() != tria.n_vertices())
+      throw std::logic_error("MeshArchive: a vertex field of " + std::to_string(x.size()) +
+                             " entries for " + std::to_string(tria.n_vertices()) + " vertices");
+    vertex_values(
+      1, [&](const unsigned int v, unsigned int) { return x[v]; },
+      [&](const unsigned int v, const double* values) { x[v] = values[0]; });
+  }
+
+  template <int dim>
+  void MeshArchive<dim>::cells(CellVector& v)
+  {
+    if (is_loading)
+    {
+      for (unsigned int c = 0; c < geometry->n_relevant_cells(); ++c)
+        v.local_element(c) = read(c)[0];
+    }
+    else
+      for (unsigned int c = 0; c < geometry->n_owned_cells(); ++c)
+        record(c).push_back(v.local_element(c));
+    advance(1);
+  }
+
+  template <int dim>
+  void MeshArchive<dim>::cells(std::vector<double>& v)
+  {
+    if (is_loading)
+    {
+      v.resize(geometry->n_relevant_cells());
+      for (unsigned int c = 0; c < geometry->n_relevant_cells(); ++c)
+        v[c] = read(c)[0];
+    }
+    else
+      for (unsigned int c = 0; c < geometry->n_owned_cells(); ++c)
+        record(c).push_back(v[c]);
+    advance(1);
+  }
+
+  template <int dim>
+  template <typename Get, typename Set>
+  void MeshArchive<dim>::face_values(const unsigned int n_components, const Parity parity,
+                                     const Get& get, const Set& set)
+  {
+    // Saving: every owned cell stores all its faces as seen from itself. Loading: every face
+    // reads its owner P's record (P sees the face as its own: sign +1).
+    if (is_loading)
+      for (unsigned int f = 0; f < geometry->faces.size(); ++f)
+      {
+        const auto& face = geometry->faces[f];
+        set(f, read(face.P) + face.face_no * n_components);
+      }
+    else
+      for (unsigned int c = 0; c < geometry->n_owned_cells(); ++c)
+        for (const auto& [f, sign] : face_of_cell[c])
+          for (unsigned int k = 0; k < n_components; ++k)
+            record(c).push_back(f == invalid_cell ? 0.
+                                                  : (parity == Parity::odd ? sign : 1) * get(f, k));
+    advance(faces_per_cell * n_components);
+  }
+
+  template <int dim>
+  void MeshArchive<dim>::check_size(const std::size_t n) const
+  {
+    if (n != geometry->faces.size())
+      throw std::logic_error("MeshArchive: a face field of " + std::to_string(n) + " entries for " +
+                             std::to_string(geometry->faces.size()) + " faces");
+  }
+
+  template <int dim>
+  void MeshArchive<dim>::faces(std::vector<double>& v, const Parity parity)
+  {
+    check_size(v.size());
+    face_values(
+      1, parity, [&](const unsigned int f, unsigned int) { return v[f]; },
+      [&](const unsigned int f, const double* x) { v[f] = x[0]; });
+  }
+
+  template <int dim>
+  template <typename TensorType>
+  void MeshArchive<dim>::faces(std::vector<TensorType>& v, const Parity parity)
+  {
+    constexpr unsigned int n = TensorType::n_independent_components;
+    check_size(v.size());
+    face_values(
+      n, parity,
+      [&](const unsigned int f, const unsigned int k)
+      { return v[f][TensorType::unrolled_to_component_indices(k)]; },
+      [&](const unsigned int f, const double* x)
+      {
+        for (unsigned int k = 0; k < n; ++k)
+          v[f][TensorType::unrolled_to_component_indices(k)] = x[k];
+      });
+  }
+
+  template <int dim>
+  void MeshArchive<dim>::save(const std::string& file) const
+  {
+    parallel::distributed::CellDataTransfer<dim, dim, Records> transfer(tria, true);
+    transfer.prepare_for_serialization(records);
+    tria.save(file);
+  }
+
+  template <int dim>
+  void place_vertices(parallel::distributed::Triangulation<dim>& tria,
+                      const std::vector<Point<dim>>& x)
+  {
+    for (const auto& cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned() || cell->is_ghost())
+        for (const unsigned int v : cell->vertex_indices())
+          cell->vertex(v) = x[cell->vertex_index(v)];
+  }
+
+  GlobalArchive::GlobalArchive(const std::string& file, const bool loading, const MPI_Comm comm)
+  {
+    if (loading)
+    {
+      stream.open(file, std::ios::in | std::ios::binary);
+      if (!stream)
+        throw std::runtime_error("cannot read the checkpoint file `" + file + "`");
+      in = std::make_unique<boost::archive::binary_iarchive>(stream);
+    }
+    else if (Utilities::MPI::this_mpi_process(comm) == 0)
+    {
+      stream.open(file, std::ios::out | std::ios::binary | std::ios::trunc);
+      if (!stream)
+        throw std::runtime_error("cannot write the checkpoint file `" + file + "`");
+      out = std::make_unique<boost::archive::binary_oarchive>(stream);
+    }
+  }
+
+  CheckpointFiles::CheckpointFiles(const std::string& output_directory)
+      : directory(output_directory + "/checkpoint")
+  {
+  }
+
+  std::string CheckpointFiles::path(const std::string& name, const bool writing) const
+  {
+    return directory + (writing ? ".new/" : "/") + name;
+  }
+
+  void CheckpointFiles::begin_writing(const MPI_Comm comm) const
+  {
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+    {
+      std::filesystem::remove_all(directory + ".new");
+      std::filesystem::create_directories(directory + ".new");
+    }
+    MPI_Barrier(comm);
+  }
+
+  void CheckpointFiles::finish_writing(const MPI_Comm comm) const
+  {
+    MPI_Barrier(comm);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+    {
+      // The old checkpoint is removed only once the new one is complete.
+      std::filesystem::remove_all(directory + ".old");
+      if (std::filesystem::exists(directory))
+        std::filesystem::rename(directory, directory + ".old");
+      std::filesystem::rename(directory + ".new", directory);
+      std::filesystem::remove_all(directory + ".old");
+    }
+    MPI_Barrier(comm);
+  }
+
+  void CheckpointFiles::check_readable(const std::string& parameter) const
+  {
+    if (!std::filesystem::exists(path("state")))
+      throw std::runtime_error(parameter + ": no checkpoint in `" + directory +
+                               "` (a run writes one every `Checkpoint interval` time steps)");
+  }
+
+  template <int dim>
+  void save_mesh(const CheckpointFiles& files, const std::string& name,
+                 const FVGeometry<dim>& geometry, std::vector<Point<dim>> reference,
+                 const std::function<void(MeshArchive<dim>&)>& state)
+  {
+    MeshArchive<dim> archive(geometry.triangulation());
+    std::vector<Point<dim>> current = geometry.vertices();
+    archive.vertices(reference);
+    archive.vertices(current);
+    archive.set_geometry(geometry);
+    state(archive);
+    archive.save(files.path(name, true));
+  }
+
+  template <int dim>
+  std::unique_ptr<MeshArchive<dim>>
+  load_mesh(const CheckpointFiles& files, const std::string& name, const MeshParameters& mesh,
+            parallel::distributed::Triangulation<dim>& tria, const std::string& prm_directory,
+            std::vector<Point<dim>>& current)
+  {
+    make_coarse_mesh(mesh, tria, prm_directory);
+    auto archive = std::make_unique<MeshArchive<dim>>(tria, files.path(name));
+    // Vertices of no owned or ghost cell keep the positions the refinement gave them.
+    std::vector<Point<dim>> reference = tria.get_vertices();
+    current = reference;
+    archive->vertices(reference);
+    archive->vertices(current);
+    place_vertices(tria, reference);
+    return archive;
+  }
+
+  void save_output_state(const CheckpointFiles& files, OutputState state, const MPI_Comm comm)
+  {
+    GlobalArchive archive(files.path("output", true), false, comm);
+    archive& state;
+  }
+
+  OutputState load_output_state(const CheckpointFiles& files, const MPI_Comm comm)
+  {
+    OutputState state;
+    GlobalArchive archive(files.path("output"), true, comm);
+    archive& state;
+    return state;
+  }
+
+  template void save_mesh(const CheckpointFiles&, const std::string&, const FVGeometry<2>&,
+                          std::vector<Point<2>>, const std::function<void(MeshArchive<2>&)>&);
+  template void save_mesh(const CheckpointFiles&, const std::string&, const FVGeometry<3>&,
+                          std::vector<Point<3>>, const std::function<void(MeshArchive<3>&)>&);
+  template std::unique_ptr<MeshArchive<2>> load_mesh(const CheckpointFiles&, const std::string&,
+                                                     const MeshParameters&,
+                                                     parallel::distributed::Triangulation<2>&,
+                                                     const std::string&, std::vector<Point<2>>&);
+  template std::unique_ptr<MeshArchive<3>> load_mesh(const CheckpointFiles&, const std::string&,
+                                                     const MeshParameters&,
+                                                     parallel::distributed::Triangulation<3>&,
+                                                     const std::string&, std::vector<Point<3>>&);
+  template void place_vertices(parallel::distributed::Triangulation<2>&,
+                               const std::vector<Point<2>>&);
+  template void place_vertices(parallel::distributed::Triangulation<3>&,
+                               const std::vector<Point<3>>&);
+  template class MeshArchive<2>;
+  template class MeshArchive<3>;
+  template void MeshArchive<2>::faces(std::vector<Tensor<1, 2>>&, Parity);
+  template void MeshArchive<3>::faces(std::vector<Tensor<1, 3>>&, Parity);
+  template void MeshArchive<2>::faces(std::vector<Tensor<2, 2>>&, Parity);
+  template void MeshArchive<3>::faces(std::vector<Tensor<2, 3>>&, Parity);
+  template void MeshArchive<2>::faces(std::vector<Point<2>>&, Parity);
+  template void MeshArchive<3>::faces(std::vector<Point<3>>&, Parity);
+} // namespace fvfsi
