@@ -10,7 +10,9 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace fvfsi_test
 {
@@ -21,6 +23,25 @@ namespace fvfsi_test
     if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       out.open("output");
     return out;
+  }
+
+  /// The numbers of a history table (fsi_history.txt, ...), line by line, without the `#` header.
+  inline std::vector<std::vector<double>> read_table(const std::string& file)
+  {
+    std::ifstream in(file);
+    std::string line;
+    std::vector<std::vector<double>> rows;
+    while (std::getline(in, line))
+    {
+      if (line.empty() || line[0] == '#')
+        continue;
+      std::istringstream s(line);
+      std::vector<double> row;
+      for (double x; s >> x;)
+        row.push_back(x);
+      rows.push_back(row);
+    }
+    return rows;
   }
 
   inline std::string yes_no(const bool b)

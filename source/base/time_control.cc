@@ -15,6 +15,14 @@ namespace fvfsi
       "coupling share it (a steady solver ignores it; a steady solid takes one step).",
       dealii::Patterns::Double(0));
     prm.add_parameter("End time", end_time, "[s] of a transient run.", dealii::Patterns::Double(0));
+    prm.add_parameter("Time step control", halvings,
+                      "FSI: how many times a failed time step (a linear solve that fails, a "
+                      "field that is not finite, coupling or solid iterations that do not "
+                      "converge) is tried again from its start with half the time step; the "
+                      "run continues with the smaller one (column dt of fsi_history.txt). "
+                      "0: off, a failed step stops the run (after writing the last converged "
+                      "state).",
+                      dealii::Patterns::Integer(0, 20));
     prm.leave_subsection();
   }
 

@@ -47,16 +47,40 @@ namespace fvfsi
     records.resize(mesh.n_active_cells());
     parallel::distributed::CellDataTransfer<dim, dim, Records> transfer(mesh, true);
     transfer.deserialize(records);
+    records_to_ghosts();
+  }
+
+  template <int dim>
+  void MeshArchive<dim>::records_to_ghosts()
+  {
     // The ghost cells' records from their owners: faces of ghost cells (boundary faces) and the
     // vertices of ghost cells are read from them.
     using Cell = typename parallel::distributed::Triangulation<dim>::active_cell_iterator;
     GridTools::exchange_cell_data_to_ghosts<std::vector<double>,
                                             parallel::distributed::Triangulation<dim>>(
-      mesh,
+      tria,
       [this](const Cell& cell)
       { return std_cxx17::optional<std::vector<double>>(records[cell->active_cell_index()]); },
       [this](const Cell& cell, const std::vector<double>& r)
       { records[cell->active_cell_index()] = r; });
+  }
+
+  template <int dim>
+  void MeshArchive<dim>::clear_for_saving()
+  {
+    is_loading = false;
+    offset = 0;
+    for (auto& r : records)
+      r.clear();
+  }
+
+  template <int dim>
+  void MeshArchive<dim>::rewind()
+  {
+    if (!is_loading)
+      records_to_ghosts();
+    is_loading = true;
+    offset = 0;
   }
 
   template <int dim>
@@ -251,6 +275,14 @@ namespace fvfsi
           cell->vertex(v) = x[cell->vertex_index(v)];
   }
 
+  GlobalArchive::GlobalArchive(std::stringstream& buffer, const bool loading)
+  {
+    if (loading)
+      in = std::make_unique<boost::archive::binary_iarchive>(buffer);
+    else
+      out = std::make_unique<boost::archive::binary_oarchive>(buffer);
+  }
+
   GlobalArchive::GlobalArchive(const std::string& file, const bool loading, const MPI_Comm comm)
   {
     if (loading)
@@ -312,17 +344,39 @@ namespace fvfsi
   }
 
   template <int dim>
+  void capture_mesh(std::unique_ptr<MeshArchive<dim>>& archive, const FVGeometry<dim>& geometry,
+                    std::vector<Point<dim>> reference,
+                    const std::function<void(MeshArchive<dim>&)>& state)
+  {
+    if (archive)
+      archive->clear_for_saving();
+    else
+      archive = std::make_unique<MeshArchive<dim>>(geometry.triangulation());
+    std::vector<Point<dim>> current = geometry.vertices();
+    archive->vertices(reference);
+    archive->vertices(current);
+    archive->set_geometry(geometry);
+    state(*archive);
+  }
+
+  template <int dim>
   void save_mesh(const CheckpointFiles& files, const std::string& name,
                  const FVGeometry<dim>& geometry, std::vector<Point<dim>> reference,
                  const std::function<void(MeshArchive<dim>&)>& state)
   {
-    MeshArchive<dim> archive(geometry.triangulation());
-    std::vector<Point<dim>> current = geometry.vertices();
+    std::unique_ptr<MeshArchive<dim>> archive;
+    capture_mesh(archive, geometry, std::move(reference), state);
+    archive->save(files.path(name, true));
+  }
+
+  template <int dim>
+  std::vector<Point<dim>> rewind_mesh(MeshArchive<dim>& archive, const FVGeometry<dim>& geometry)
+  {
+    archive.rewind();
+    std::vector<Point<dim>> reference = geometry.vertices(), current = reference;
     archive.vertices(reference);
     archive.vertices(current);
-    archive.set_geometry(geometry);
-    state(archive);
-    archive.save(files.path(name, true));
+    return current;
   }
 
   template <int dim>
@@ -356,6 +410,12 @@ namespace fvfsi
     return state;
   }
 
+  template void capture_mesh(std::unique_ptr<MeshArchive<2>>&, const FVGeometry<2>&,
+                             std::vector<Point<2>>, const std::function<void(MeshArchive<2>&)>&);
+  template void capture_mesh(std::unique_ptr<MeshArchive<3>>&, const FVGeometry<3>&,
+                             std::vector<Point<3>>, const std::function<void(MeshArchive<3>&)>&);
+  template std::vector<Point<2>> rewind_mesh(MeshArchive<2>&, const FVGeometry<2>&);
+  template std::vector<Point<3>> rewind_mesh(MeshArchive<3>&, const FVGeometry<3>&);
   template void save_mesh(const CheckpointFiles&, const std::string&, const FVGeometry<2>&,
                           std::vector<Point<2>>, const std::function<void(MeshArchive<2>&)>&);
   template void save_mesh(const CheckpointFiles&, const std::string&, const FVGeometry<3>&,

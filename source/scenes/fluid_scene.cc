@@ -248,8 +248,11 @@ namespace fvfsi
   void FluidScene<dim>::run_transient()
   {
     const unsigned int total = clock.n_steps();
+    const auto mesh_state = [this](MeshArchive<dim>& a) { checkpoint_state(a); };
+    const auto global_state = [this](GlobalArchive& a) { checkpoint_state(a); };
     for (unsigned int step = clock.step() + 1; step <= total; ++step)
     {
+      this->capture_step_start(mesh_state, global_state);
       try
       {
         clock.advance();
@@ -259,8 +262,18 @@ namespace fvfsi
       }
       catch (...)
       {
-        pcout << "fvfsi: fluid run stopped at time step " << step << "; the last written "
-              << "output (VTU, fluid_history.txt) holds the last good state\n";
+        // Back to the last converged state (the mesh too), which is written.
+        const auto move_to = [this](const std::vector<Point<dim>>& x)
+        {
+          if (!motion)
+            return;
+          const std::vector<Point<dim>> now = fv->vertices();
+          fvfsi::move_mesh(*fv, triangulation, now, x);
+          fluid->move_mesh(std::vector<double>(fv->faces.size(), 0.0));
+          probes.locate(*fv);
+        };
+        this->return_to_step_start(move_to, mesh_state, global_state);
+        this->write_last_converged_state(*fluid, "fluid", mesh_state, global_state);
         throw;
       }
       result.n_time_steps = step;
@@ -275,8 +288,7 @@ namespace fvfsi
       if (this->output_due(step))
         this->write_output(*fluid);
       if (this->checkpoint_due(step))
-        this->write_checkpoint([this](MeshArchive<dim>& a) { checkpoint_state(a); },
-                               [this](GlobalArchive& a) { checkpoint_state(a); });
+        this->write_checkpoint(mesh_state, global_state);
     }
     if (scene_parameters.output_interval == 0)
       this->write_output(*fluid);

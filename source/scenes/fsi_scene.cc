@@ -34,7 +34,8 @@ namespace fvfsi
         output_directory(output_directory), steady(!input.fluid.transient),
         pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0),
         timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times), clock(input.time),
-        fluid_tria(comm), solid_tria(comm), probes(input.solid_scene.probes, "Solid scene/Probes")
+        max_halvings(input.time.halvings), fluid_tria(comm), solid_tria(comm),
+        probes(input.solid_scene.probes, "Solid scene/Probes")
   {
     // Transient fluid with a transient or quasi-static solid; or both steady (solve_steady()).
     if (steady && solid_parameters.transient)
@@ -124,6 +125,8 @@ namespace fvfsi
       for (const auto& c : vector_columns<dim>("u", "_" + probes.name(i)))
         columns.push_back(c);
     columns.push_back("min_volume_ratio"); // min over the fluid cells of V_P / V_P(reference)
+    if (!steady)
+      columns.push_back("dt"); // the time step of the line (Time step control may halve it)
     const std::string name = steady ? "/fsi_steady_history.txt" : "/fsi_history.txt";
     if (checkpoints.restart_from.empty())
       history = std::make_unique<HistoryFile>(output_directory + name, columns, comm);
@@ -159,11 +162,7 @@ namespace fvfsi
     files.begin_writing(comm);
     // The same calls in the same order as restore_checkpoint()'s.
     save_mesh<dim>(files, "fluid_mesh", *fluid_fv, fluid_reference_fv->vertices(),
-                   [this](MeshArchive<dim>& archive)
-                   {
-                     fluid->checkpoint(archive);
-                     motion->checkpoint(archive);
-                   });
+                   [this](MeshArchive<dim>& archive) { fluid_state(archive); });
     save_mesh<dim>(files, "solid_mesh", *solid_fv, solid_fv->vertices(),
                    [this](MeshArchive<dim>& archive) { solid->checkpoint(archive); });
     {
@@ -177,6 +176,45 @@ namespace fvfsi
   }
 
   template <int dim>
+  void FsiScene<dim>::fluid_state(MeshArchive<dim>& archive)
+  {
+    fluid->checkpoint(archive);
+    motion->checkpoint(archive);
+  }
+
+  template <int dim>
+  void FsiScene<dim>::capture_step_start()
+  {
+    TimerOutput::Scope scope(timer, "step start copy");
+    capture_mesh<dim>(step_start_fluid, *fluid_fv, fluid_reference_fv->vertices(),
+                      [this](MeshArchive<dim>& a) { fluid_state(a); });
+    capture_mesh<dim>(step_start_solid, *solid_fv, solid_fv->vertices(),
+                      [this](MeshArchive<dim>& a) { solid->checkpoint(a); });
+    step_start_global.str("");
+    step_start_global.clear();
+    GlobalArchive global(step_start_global, false);
+    global_state(global);
+  }
+
+  template <int dim>
+  void FsiScene<dim>::return_to_step_start()
+  {
+    // The fluid mesh back to where the step started (geometry, triangulation, the fluid's
+    // operators), then the states as captured.
+    const std::vector<Point<dim>> x = rewind_mesh(*step_start_fluid, *fluid_fv),
+                                  now = fluid_fv->vertices();
+    move_mesh(*fluid_fv, fluid_tria, now, x);
+    fluid->move_mesh(std::vector<double>(fluid_fv->faces.size(), 0.0));
+    fluid_state(*step_start_fluid);
+    rewind_mesh(*step_start_solid, *solid_fv);
+    solid->checkpoint(*step_start_solid);
+    step_start_global.clear();
+    step_start_global.seekg(0);
+    GlobalArchive global(step_start_global, true);
+    global_state(global);
+  }
+
+  template <int dim>
   void FsiScene<dim>::restore_checkpoint()
   {
     // The fluid mesh moves from its reference positions to the saved ones (its geometry, the
@@ -187,8 +225,7 @@ namespace fvfsi
     move_mesh(*fluid_fv, fluid_tria, reference, restart_vertices);
     fluid->move_mesh(std::vector<double>(fluid_fv->faces.size(), 0.0));
     fluid_restart->set_geometry(*fluid_fv);
-    fluid->checkpoint(*fluid_restart);
-    motion->checkpoint(*fluid_restart);
+    fluid_state(*fluid_restart);
     solid_restart->set_geometry(*solid_fv);
     solid->checkpoint(*solid_restart);
     fluid_restart.reset();
@@ -286,7 +323,11 @@ namespace fvfsi
     vertices_old = fluid_fv->vertices();
     d = d_old;
     if (clock.step() > 2)
-      d.sadd(2, -1, d_older); // 2 d^n - d^(n-1)
+    {
+      // d^n + omega (d^n - d^(n-1)), omega = dt / dt_old: 2 d^n - d^(n-1) for equal steps.
+      const double omega = clock.time_step() / clock.previous_time_step();
+      d.sadd(1 + omega, -omega, d_older);
+    }
 
     const unsigned int k = converge_interface(); // 2
     // 3: accept the step.
@@ -410,6 +451,7 @@ namespace fvfsi
       append(line, u);
     }
     line.push_back(volume_ratio);
+    line.push_back(clock.time_step());
     history->write_line(line);
   }
 
@@ -450,28 +492,55 @@ namespace fvfsi
       timer.print_summary();
       return;
     }
-    const unsigned int total = clock.n_steps();
+    // Steps to the end time at the present dt (Time step control may make it smaller).
+    const auto steps_to_end = [this]
+    {
+      return clock.step() + static_cast<unsigned int>(std::ceil(
+                              (clock.end_time() - clock.time()) / clock.time_step() - 1e-6));
+    };
+    unsigned int total = clock.n_steps();
     const auto last_fluid_alone_step = static_cast<unsigned int>(
       std::min<double>(total, std::floor(prm.coupling.start_time / clock.time_step() + 1e-9)));
     Progress progress;
-    const unsigned int first_step = clock.step() + 1; // 1, or the one after a checkpoint
-    if (result.n_coupled_steps > 0)
+    if (result.n_coupled_steps > 0) // restarted in the coupled phase
       progress.new_phase(clock.step());
-    for (unsigned int step = first_step; step <= total; ++step)
+    unsigned int halvings = 0; // of the present time step
+    while (!clock.at_end())
     {
+      const unsigned int step = clock.step() + 1;
+      capture_step_start();
       unsigned int iterations = 0;
       Timer step_timer;
       try
       {
         iterations = solve_time_step();
       }
-      catch (...)
+      catch (const std::exception& e)
       {
-        pcout
-          << "fvfsi: FSI run stopped at time step " << step << "; fsi_history.txt holds every "
-          << "converged time step before it (and the VTU files of Fluid scene/Output interval)\n";
+        // Back to the last converged state: tried again with half the time step, or written.
+        const double dt = clock.time_step();
+        return_to_step_start();
+        if (halvings < max_halvings)
+        {
+          ++halvings;
+          clock.set_time_step(dt / 2);
+          pcout << "fvfsi: FSI time step " << step << " with dt = " << dt << " s failed ("
+                << e.what() << ")\nfvfsi: trying it again with dt = " << dt / 2
+                << " s (Time/Time step control: halving " << halvings << " of " << max_halvings
+                << ")\n";
+          continue;
+        }
+        output_results();
+        write_checkpoint();
+        pcout << "fvfsi: FSI run stopped at time step " << step << "; written: the last converged "
+              << "state (t = " << clock.time() << " s) as VTU and a checkpoint (continue with "
+              << "Restart from = " << output_directory << "); fsi_history.txt holds every "
+              << "converged time step\n";
         throw;
       }
+      if (halvings > 0)
+        total = steps_to_end();
+      halvings = 0;
       result.n_time_steps = step;
       if (iterations > 0)
         result.coupled_wall_seconds += step_timer.wall_time();
@@ -480,7 +549,7 @@ namespace fvfsi
       result.n_coupled_steps += iterations > 0;
       result.total_coupling_iterations += iterations;
       result.max_coupling_iterations = std::max(result.max_coupling_iterations, iterations);
-      if (step % fluid_scene_parameters.progress_interval == 0 || step == total)
+      if (step % fluid_scene_parameters.progress_interval == 0 || clock.at_end())
       {
         pcout << "fvfsi: FSI step " << step << "/" << total << ", t = " << clock.time() << " s, ";
         if (iterations > 0)

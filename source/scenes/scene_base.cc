@@ -58,6 +58,7 @@ namespace fvfsi
   void SingleMeshScene<dim>::open_history(const std::string& file_name,
                                           const std::vector<std::string>& columns)
   {
+    history_name = file_name;
     if (!restarting())
     {
       history = std::make_unique<HistoryFile>(output_directory + "/" + file_name, columns, comm);

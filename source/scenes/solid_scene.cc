@@ -145,8 +145,24 @@ namespace fvfsi
       this->restore_checkpoint(mesh_state, global_state);
     for (unsigned int step = clock.step() + 1; step <= n_steps; ++step)
     {
-      clock.advance();
-      solid->solve_time_step();
+      if (solid_parameters.transient)
+        this->capture_step_start(mesh_state, global_state);
+      try
+      {
+        clock.advance();
+        solid->solve_time_step();
+      }
+      catch (...)
+      {
+        // Transient: back to the last converged state, which is written.
+        if (solid_parameters.transient)
+        {
+          this->return_to_step_start([](const std::vector<Point<dim>>&) {}, mesh_state,
+                                     global_state);
+          this->write_last_converged_state(*solid, "solid", mesh_state, global_state);
+        }
+        throw;
+      }
       const unsigned int iterations = solid->outer_iterations();
       result.total_outer_iterations += iterations;
       result.n_time_steps = step;

@@ -33,25 +33,6 @@
 
 using namespace fvfsi_test;
 
-/// The numbers of a history file, line by line.
-std::vector<std::vector<double>> read_table(const std::string& file)
-{
-  std::ifstream in(file);
-  std::string line;
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line))
-  {
-    if (line.empty() || line[0] == '#')
-      continue;
-    std::istringstream s(line);
-    std::vector<double> row;
-    for (double x; s >> x;)
-      row.push_back(x);
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 /// max over the entries of |a - b| / (largest |b| of the column); 1 if the shapes differ.
 double table_difference(const std::vector<std::vector<double>>& a,
                         const std::vector<std::vector<double>>& b)

@@ -55,20 +55,7 @@ const std::vector<std::string> tight = {"Fluid momentum solver/Residual reductio
 /// The columns t, coupling_iterations, residual, drag, lift, ux_A, uy_A of fsi_history.txt.
 std::vector<std::vector<double>> read_history(const std::string& directory)
 {
-  std::ifstream in(directory + "/fsi_history.txt");
-  std::string line;
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line))
-  {
-    if (line.empty() || line[0] == '#')
-      continue;
-    std::istringstream s(line);
-    std::vector<double> row;
-    for (double x; s >> x;)
-      row.push_back(x);
-    rows.push_back(row);
-  }
-  return rows;
+  return read_table(directory + "/fsi_history.txt");
 }
 
 /// Runs the case on `comm` into `directory`; returns the error message ("" if it ran through).

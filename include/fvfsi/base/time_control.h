@@ -45,6 +45,8 @@ namespace fvfsi
   {
     double time_step = 1e-3; ///< dt [s]
     double end_time = 1;     ///< [s]
+    /// Times a failed time step is tried again with half its dt (0: a failed step stops the run).
+    unsigned int halvings = 0;
     void declare(dealii::ParameterHandler& prm);
   };
 
@@ -65,10 +67,11 @@ namespace fvfsi
     /// Take `dt` from the next advance() on [s].
     void set_time_step(double dt) { next_dt = dt; }
 
-    double time() const { return t; }                 ///< t^(n+1) of the step being solved [s]
-    double previous_time() const { return t - dt; }   ///< t^n [s]
-    double time_step() const { return dt; }           ///< dt of the step being solved [s]
-    unsigned int step() const { return step_number; } ///< 0 before the first advance()
+    double time() const { return t; }                    ///< t^(n+1) of the step being solved [s]
+    double previous_time() const { return t - dt; }      ///< t^n [s]
+    double time_step() const { return dt; }              ///< dt of the step being solved [s]
+    double previous_time_step() const { return dt_old; } ///< t^n - t^(n-1) [s] (0: none)
+    unsigned int step() const { return step_number; }    ///< 0 before the first advance()
     double end_time() const { return end; }
     /// Steps from 0 to the end time with the initial dt.
     unsigned int n_steps() const;

@@ -39,6 +39,7 @@
 #include <fstream>
 #include <functional>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -93,6 +94,12 @@ namespace fvfsi
     /// Write the mesh and the records to `file` (collective).
     void save(const std::string& file) const;
 
+    /// A saving archive becomes a loading one of the records it holds, on the same mesh and
+    /// partition (collective): a run returns to the state at the start of a failed time step.
+    void rewind();
+    /// Saving anew into the same records, their memory kept (the start of every time step).
+    void clear_for_saving();
+
   private:
     static constexpr unsigned int faces_per_cell = dealii::GeometryInfo<dim>::faces_per_cell;
     /// Per owned and ghost cell of the geometry and face number: the face index and its sign as
@@ -108,6 +115,8 @@ namespace fvfsi
     template <typename Get, typename Set>
     void face_values(unsigned int n_components, Parity parity, const Get& get, const Set& set);
     void advance(unsigned int n) { offset += n; }
+    /// Loading: every ghost cell gets its owner's record (collective).
+    void records_to_ghosts();
     /// A face field has an entry per face (saving and loading alike: the solver sizes it).
     void check_size(std::size_t n) const;
 
@@ -134,6 +143,8 @@ namespace fvfsi
     /// Saving (rank 0 writes `file`; the other ranks' calls do nothing) or loading (every rank
     /// reads `file`).
     GlobalArchive(const std::string& file, bool loading, MPI_Comm comm);
+    /// In memory, on every rank: saving into or loading from `buffer`.
+    GlobalArchive(std::stringstream& buffer, bool loading);
     bool loading() const { return in != nullptr; }
     template <typename T>
     GlobalArchive& operator&(T& x)
@@ -166,8 +177,23 @@ namespace fvfsi
     void check_readable(const std::string& parameter) const;
   };
 
-  /// Save the mesh `name` of a scene: its reference and current vertex positions, then what
-  /// `state` puts into the archive (the solvers' checkpoint()), collective.
+  /// A mesh's reference and current vertex positions, then what `state` puts into the archive
+  /// (the solvers' checkpoint()), in memory: save_mesh() writes it, the start of a time step
+  /// keeps it (a failed step returns to it through rewind_mesh()).
+  /// `archive` is made if empty, else cleared and filled anew (its memory reused).
+  template <int dim>
+  void capture_mesh(std::unique_ptr<MeshArchive<dim>>& archive, const FVGeometry<dim>& geometry,
+                    std::vector<dealii::Point<dim>> reference,
+                    const std::function<void(MeshArchive<dim>&)>& state);
+
+  /// An archive of capture_mesh() made ready to be read again on the same mesh; returns the
+  /// current vertex positions it holds (the solvers' states follow).
+  template <int dim>
+  std::vector<dealii::Point<dim>> rewind_mesh(MeshArchive<dim>& archive,
+                                              const FVGeometry<dim>& geometry);
+
+  /// Save the mesh `name` of a scene: capture_mesh() into the checkpoint being written
+  /// (collective).
   template <int dim>
   void save_mesh(const CheckpointFiles& files, const std::string& name,
                  const FVGeometry<dim>& geometry, std::vector<dealii::Point<dim>> reference,

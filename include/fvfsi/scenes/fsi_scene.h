@@ -120,6 +120,12 @@ namespace fvfsi
     void write_checkpoint();
     /// Restarting: the states of the solvers, after make_grids() and make_interface().
     void restore_checkpoint();
+    /// The fluid's and the mesh motion's part of a checkpoint.
+    void fluid_state(MeshArchive<dim>& archive);
+    /// The state at the start of a time step, kept in memory (the checkpoint's content), and the
+    /// return to it after a failed step.
+    void capture_step_start();
+    void return_to_step_start();
     /// The part of a checkpoint every rank holds alike.
     template <class Archive>
     void global_state(Archive& archive);
@@ -161,6 +167,7 @@ namespace fvfsi
     /// Wall time per part of Algorithm 1 (printed at the end, summary.json `timing`).
     mutable dealii::TimerOutput timer;
     TimeControl clock;
+    const unsigned int max_halvings; ///< Time/Time step control
 
     dealii::parallel::distributed::Triangulation<dim> fluid_tria, solid_tria;
     std::unique_ptr<FVGeometry<dim>> fluid_fv, fluid_reference_fv, solid_fv;
@@ -183,6 +190,8 @@ namespace fvfsi
     /// restore_checkpoint(), and the fluid vertex positions saved.
     std::unique_ptr<MeshArchive<dim>> fluid_restart, solid_restart;
     std::vector<dealii::Point<dim>> restart_vertices;
+    std::unique_ptr<MeshArchive<dim>> step_start_fluid, step_start_solid;
+    std::stringstream step_start_global;
 
     std::optional<dealii::Tensor<1, dim>> last_force; ///< fluid_force() of the last record
     double volume_ratio = 1; ///< min over the fluid cells of V_P / V_P(reference), now

@@ -19,6 +19,7 @@
 
 #include <cmath>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -83,6 +84,19 @@ namespace fvfsi
     /// Restarting, once the solvers are made on the geometry: the same calls, reading.
     template <typename MeshState, typename GlobalState>
     void restore_checkpoint(const MeshState& mesh_state, const GlobalState& global_state);
+    /// The same state kept in memory at the start of a time step...
+    template <typename MeshState, typename GlobalState>
+    void capture_step_start(const MeshState& mesh_state, const GlobalState& global_state);
+    /// ...and the return to it after a failed step: `move_to(x)` moves the mesh back to the
+    /// vertex positions x of the step's start (a moving mesh), then the states are read.
+    template <typename MoveTo, typename MeshState, typename GlobalState>
+    void return_to_step_start(const MoveTo& move_to, const MeshState& mesh_state,
+                              const GlobalState& global_state);
+    /// After a failed step: the last converged state (returned to) as VTU and a checkpoint, and
+    /// the message saying so.
+    template <typename Solver, typename MeshState, typename GlobalState>
+    void write_last_converged_state(const Solver& solver, const std::string& scene,
+                                    const MeshState& mesh_state, const GlobalState& global_state);
     /// True if a progress line or VTU output is due after time step `step` of `n_steps`.
     bool progress_due(unsigned int step, unsigned int n_steps) const;
     bool output_due(unsigned int step) const;
@@ -114,12 +128,58 @@ namespace fvfsi
     PointProbes<dim> probes;
     std::unique_ptr<VtuOutput<dim>> vtu_output;
     std::unique_ptr<HistoryFile> history;
+    std::string history_name; ///< its file name
     CheckpointParameters checkpoints;
     /// The vertex positions the mesh was made with; restarting, also those it had at the
     /// checkpoint, and its records until restore_checkpoint() reads them.
     std::vector<dealii::Point<dim>> reference_vertices, restart_vertices;
     std::unique_ptr<MeshArchive<dim>> restart_archive;
+    std::unique_ptr<MeshArchive<dim>> step_start;
+    std::stringstream step_start_global;
   };
+
+  template <int dim>
+  template <typename MeshState, typename GlobalState>
+  void SingleMeshScene<dim>::capture_step_start(const MeshState& mesh_state,
+                                                const GlobalState& global_state)
+  {
+    capture_mesh<dim>(step_start, *fv, reference_vertices, mesh_state);
+    step_start_global.str("");
+    step_start_global.clear();
+    GlobalArchive global(step_start_global, false);
+    global& clock;
+    global_state(global);
+  }
+
+  template <int dim>
+  template <typename MoveTo, typename MeshState, typename GlobalState>
+  void SingleMeshScene<dim>::return_to_step_start(const MoveTo& move_to,
+                                                  const MeshState& mesh_state,
+                                                  const GlobalState& global_state)
+  {
+    move_to(rewind_mesh(*step_start, *fv));
+    mesh_state(*step_start);
+    step_start_global.clear();
+    step_start_global.seekg(0);
+    GlobalArchive global(step_start_global, true);
+    global& clock;
+    global_state(global);
+  }
+
+  template <int dim>
+  template <typename Solver, typename MeshState, typename GlobalState>
+  void SingleMeshScene<dim>::write_last_converged_state(const Solver& solver,
+                                                        const std::string& scene,
+                                                        const MeshState& mesh_state,
+                                                        const GlobalState& global_state)
+  {
+    write_output(solver);
+    write_checkpoint(mesh_state, global_state);
+    pcout << "fvfsi: " << scene << " run stopped at time step " << clock.step() + 1
+          << "; written: the last converged state (t = " << clock.time()
+          << " s) as VTU and a checkpoint (continue with Restart from = " << output_directory
+          << "); " << history_name << " holds every converged time step\n";
+  }
 
   template <int dim>
   template <typename MeshState, typename GlobalState>
