@@ -22,15 +22,27 @@ namespace fvfsi
   } // namespace
 
   template <int dim>
-  MeshArchive<dim>::MeshArchive(const parallel::distributed::Triangulation<dim>& tria)
-      : tria(tria), is_loading(false), records(tria.n_active_cells())
+  MeshArchive<dim>::MeshArchive(const parallel::distributed::Triangulation<dim>& tria,
+                                const bool in_memory)
+      : tria(tria), is_loading(false), in_memory(in_memory),
+        records(in_memory ? 0 : tria.n_active_cells())
   {
+  }
+
+  template <int dim>
+  void MeshArchive<dim>::copy(double* const data, const std::size_t n)
+  {
+    if (is_loading)
+      std::copy(memory.begin() + offset, memory.begin() + offset + n, data);
+    else
+      memory.insert(memory.end(), data, data + n);
+    advance(n);
   }
 
   template <int dim>
   MeshArchive<dim>::MeshArchive(parallel::distributed::Triangulation<dim>& mesh,
                                 const std::string& file)
-      : tria(mesh), is_loading(true)
+      : tria(mesh), is_loading(true), in_memory(false)
   {
     if (mesh.n_levels() != 1)
       throw std::logic_error("MeshArchive: load onto a coarse mesh");
@@ -70,6 +82,7 @@ namespace fvfsi
   {
     is_loading = false;
     offset = 0;
+    memory.clear();
     for (auto& r : records)
       r.clear();
   }
@@ -77,7 +90,7 @@ namespace fvfsi
   template <int dim>
   void MeshArchive<dim>::rewind()
   {
-    if (!is_loading)
+    if (!is_loading && !in_memory)
       records_to_ghosts();
     is_loading = true;
     offset = 0;
@@ -87,7 +100,7 @@ namespace fvfsi
   void MeshArchive<dim>::set_geometry(const FVGeometry<dim>& g)
   {
     geometry = &g;
-    if (!is_loading)
+    if (!is_loading && !in_memory)
       map_faces();
   }
 
@@ -150,6 +163,9 @@ namespace fvfsi
   template <int dim>
   void MeshArchive<dim>::vertices(std::vector<Point<dim>>& x)
   {
+    static_assert(sizeof(Point<dim>) == dim * sizeof(double), "a Point is dim doubles");
+    if (in_memory)
+      return copy(reinterpret_cast<double*>(x.data()), x.size() * dim);
     if (is_loading)
       x.resize(tria.n_vertices());
     vertex_values(
@@ -167,6 +183,8 @@ namespace fvfsi
     if (x.size() != tria.n_vertices())
       throw std::logic_error("MeshArchive: a vertex field of " + std::to_string(x.size()) +
                              " entries for " + std::to_string(tria.n_vertices()) + " vertices");
+    if (in_memory)
+      return copy(x.data(), x.size());
     vertex_values(
       1, [&](const unsigned int v, unsigned int) { return x[v]; },
       [&](const unsigned int v, const double* values) { x[v] = values[0]; });
@@ -175,6 +193,8 @@ namespace fvfsi
   template <int dim>
   void MeshArchive<dim>::cells(CellVector& v)
   {
+    if (in_memory) // owned and ghost values: they follow each other in v's memory
+      return copy(v.begin(), geometry->n_relevant_cells());
     if (is_loading)
     {
       for (unsigned int c = 0; c < geometry->n_relevant_cells(); ++c)
@@ -189,6 +209,8 @@ namespace fvfsi
   template <int dim>
   void MeshArchive<dim>::cells(std::vector<double>& v)
   {
+    if (in_memory)
+      return copy(v.data(), v.size());
     if (is_loading)
     {
       v.resize(geometry->n_relevant_cells());
@@ -235,6 +257,8 @@ namespace fvfsi
   void MeshArchive<dim>::faces(std::vector<double>& v, const Parity parity)
   {
     check_size(v.size());
+    if (in_memory)
+      return copy(v.data(), v.size());
     face_values(
       1, parity, [&](const unsigned int f, unsigned int) { return v[f]; },
       [&](const unsigned int f, const double* x) { v[f] = x[0]; });
@@ -246,6 +270,9 @@ namespace fvfsi
   {
     constexpr unsigned int n = TensorType::n_independent_components;
     check_size(v.size());
+    static_assert(sizeof(TensorType) == n * sizeof(double), "a tensor is its components");
+    if (in_memory)
+      return copy(reinterpret_cast<double*>(v.data()), v.size() * n);
     face_values(
       n, parity,
       [&](const unsigned int f, const unsigned int k)
@@ -260,6 +287,8 @@ namespace fvfsi
   template <int dim>
   void MeshArchive<dim>::save(const std::string& file) const
   {
+    if (in_memory)
+      throw std::logic_error("MeshArchive: an in-memory copy cannot be saved");
     parallel::distributed::CellDataTransfer<dim, dim, Records> transfer(tria, true);
     transfer.prepare_for_serialization(records);
     tria.save(file);
@@ -346,12 +375,12 @@ namespace fvfsi
   template <int dim>
   void capture_mesh(std::unique_ptr<MeshArchive<dim>>& archive, const FVGeometry<dim>& geometry,
                     std::vector<Point<dim>> reference,
-                    const std::function<void(MeshArchive<dim>&)>& state)
+                    const std::function<void(MeshArchive<dim>&)>& state, const bool in_memory)
   {
     if (archive)
       archive->clear_for_saving();
     else
-      archive = std::make_unique<MeshArchive<dim>>(geometry.triangulation());
+      archive = std::make_unique<MeshArchive<dim>>(geometry.triangulation(), in_memory);
     std::vector<Point<dim>> current = geometry.vertices();
     archive->vertices(reference);
     archive->vertices(current);
@@ -365,7 +394,7 @@ namespace fvfsi
                  const std::function<void(MeshArchive<dim>&)>& state)
   {
     std::unique_ptr<MeshArchive<dim>> archive;
-    capture_mesh(archive, geometry, std::move(reference), state);
+    capture_mesh(archive, geometry, std::move(reference), state, false);
     archive->save(files.path(name, true));
   }
 
@@ -411,9 +440,11 @@ namespace fvfsi
   }
 
   template void capture_mesh(std::unique_ptr<MeshArchive<2>>&, const FVGeometry<2>&,
-                             std::vector<Point<2>>, const std::function<void(MeshArchive<2>&)>&);
+                             std::vector<Point<2>>, const std::function<void(MeshArchive<2>&)>&,
+                             bool);
   template void capture_mesh(std::unique_ptr<MeshArchive<3>>&, const FVGeometry<3>&,
-                             std::vector<Point<3>>, const std::function<void(MeshArchive<3>&)>&);
+                             std::vector<Point<3>>, const std::function<void(MeshArchive<3>&)>&,
+                             bool);
   template std::vector<Point<2>> rewind_mesh(MeshArchive<2>&, const FVGeometry<2>&);
   template std::vector<Point<3>> rewind_mesh(MeshArchive<3>&, const FVGeometry<3>&);
   template void save_mesh(const CheckpointFiles&, const std::string&, const FVGeometry<2>&,

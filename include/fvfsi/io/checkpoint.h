@@ -68,7 +68,11 @@ namespace fvfsi
   {
   public:
     /// For saving the state on `tria`: each call appends to the owned cells' records.
-    explicit MeshArchive(const dealii::parallel::distributed::Triangulation<dim>& tria);
+    /// `in_memory`: a copy of the state for this mesh and partition alone (the start of a time
+    /// step): the arrays as they are, owned and ghost entries, no records per cell; it cannot be
+    /// saved, only rewound and read.
+    explicit MeshArchive(const dealii::parallel::distributed::Triangulation<dim>& tria,
+                         bool in_memory = false);
     /// For loading: `tria` holds the coarse mesh of the run (make_coarse_mesh()); it is refined
     /// and partitioned as saved in `file` and the records are read (collective).
     MeshArchive(dealii::parallel::distributed::Triangulation<dim>& tria, const std::string& file);
@@ -123,6 +127,11 @@ namespace fvfsi
     const dealii::parallel::distributed::Triangulation<dim>& tria;
     const FVGeometry<dim>* geometry = nullptr;
     bool is_loading;
+    bool in_memory;
+    /// In memory: the arrays one after another.
+    std::vector<double> memory;
+    /// In memory: save or load n values at `data`.
+    void copy(double* data, std::size_t n);
     /// One record per active cell (active_cell_index); owned cells' when saving, owned and ghost
     /// cells' when loading.
     std::vector<std::vector<double>> records;
@@ -180,11 +189,12 @@ namespace fvfsi
   /// A mesh's reference and current vertex positions, then what `state` puts into the archive
   /// (the solvers' checkpoint()), in memory: save_mesh() writes it, the start of a time step
   /// keeps it (a failed step returns to it through rewind_mesh()).
-  /// `archive` is made if empty, else cleared and filled anew (its memory reused).
+  /// `archive` is made if empty (in memory or for a file), else cleared and filled anew (its
+  /// memory reused).
   template <int dim>
   void capture_mesh(std::unique_ptr<MeshArchive<dim>>& archive, const FVGeometry<dim>& geometry,
                     std::vector<dealii::Point<dim>> reference,
-                    const std::function<void(MeshArchive<dim>&)>& state);
+                    const std::function<void(MeshArchive<dim>&)>& state, bool in_memory = true);
 
   /// An archive of capture_mesh() made ready to be read again on the same mesh; returns the
   /// current vertex positions it holds (the solvers' states follow).
