@@ -21,7 +21,7 @@
 //   (d) the same for a solid scene (prm/turek_hron_csm3.prm on a 20 x 2 flag, dt = 0.01 s, 20
 //       steps of 574 to 1792 outer iterations): continued from step 10 with Solid/Max outer
 //       iterations = 1100 it stops at step 13 (1541 needed) after writing step 12, and continued
-//       from that with the shipped limit it equals the uninterrupted run exactly;
+//       from that with the shipped limit it equals the uninterrupted run exactly.
 #include <fvfsi/scenes/fsi_scene.h>
 #include <fvfsi/scenes/solid_scene.h>
 
