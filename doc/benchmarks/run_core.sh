@@ -50,7 +50,7 @@ for c in "${CASES[@]}"; do
 done
 printf ', after: %s.\n\n' "$(cut -d' ' -f1-3 /proc/loadavg)" >> "$RESULTS/machine.txt"
 
-python3 - "$RESULTS" "${CASES[@]%% *}" <<'EOF'
+python3 - "$RESULTS" "${CASES[@]%% *}" <<'EOF' | tee "$RESULTS/table.md"
 import sys, os
 results, names = sys.argv[1], sys.argv[2:]
 data, malloc_data = {}, {}
@@ -156,3 +156,8 @@ plain_row("max cell error after 5 corrections (sanity)",
 EOF
 echo
 echo "Reproduce: doc/benchmarks/run_core.sh $BUILD_DIR $REPEATS"
+# The times per cell as doc/results/core_performance.png.
+/usr/bin/python3 "$SOURCE_DIR/doc/results/table_plot.py" "$RESULTS/table.md" \
+  "$SOURCE_DIR/doc/results/core_performance.png" --bar --x "" --y "2D, 102,400 cells" \
+  --y "2D, 1,048,576 cells" --y "3D, 110,592 cells" --match " ns" --logy \
+  --title "FV core: median CPU time per cell [ns] (doc/benchmarks/run_core.sh)"

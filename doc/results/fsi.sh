@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # Measures the coupling methods on prm/fsi_pressure_column.prm and prints the markdown table of
 # doc/results/fsi.md: interface displacement error against the static solution, coupling
-# iterations (total, max per step), wall seconds (median of 3 runs, one rank).
+# iterations (total, max per step), wall seconds (median of 3 runs, one rank); and as a bar chart,
+# doc/results/fsi_coupling_methods.png.
 #   usage: doc/results/fsi.sh [path/to/fvfsi]   (default: build/fvfsi)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 fvfsi=${1:-build/fvfsi}
+table=$(mktemp)
+emit() { echo "$1" | tee -a "$table"; } # a table line, also kept for the plot
 exact=$(python3 -c "print(5000/(1e7*0.7/(1.3*0.4)-5000))")
-echo "| method | relaxation | reuse | d [m] | error | coupling iterations | max per step | wall [s] (median of 3) |"
-echo "|---|---:|---:|---:|---:|---:|---:|---:|"
+emit "| method | relaxation | reuse | d [m] | error | coupling iterations | max per step | wall [s] (median of 3) |"
+emit "|---|---:|---:|---:|---:|---:|---:|---:|"
 for setting in "fixed 0.4 0" "Aitken 0.4 0" "IQN-ILS 0.4 0" "IQN-ILS 0.4 3" "IQN-IMVJ 0.4 0" "fixed 1 0"; do
   set -- $setting
   walls=()
@@ -31,5 +34,11 @@ PY
     rm -rf "$dir"
   done
   median=$(printf '%s\n' "${walls[@]}" | sort -g | sed -n 2p)
-  echo "| $1 | $2 | $3 | $line | $median |"
+  emit "| $1 | $2 | $3 | $line | $median |"
 done
+# The table as doc/results/fsi_coupling_methods.png.
+/usr/bin/python3 doc/results/table_plot.py "$table" doc/results/fsi_coupling_methods.png --bar \
+  --x method --group relaxation --group reuse --y "coupling iterations" \
+  --y "wall [s] (median of 3)" --logy \
+  --title "Coupling methods, prm/fsi_pressure_column.prm (label: method, relaxation, reuse)"
+rm -f "$table"

@@ -4,7 +4,8 @@
 # of tests/core/poisson_convergence (an 8x8 / 4x4x4 coarse mesh with every interior vertex moved by
 # 0.25 of its shortest edge, uniformly refined), refinements 1-5 in 2D and 1-4 in 3D, one MPI rank.
 # Prints one markdown row per run from summary.json; orders are log2 of the error ratio of
-# consecutive rows (h halves). The rows of refinements 1-3 are those of the test.
+# consecutive rows (h halves). The rows of refinements 1-3 are those of the test. The errors are
+# plotted as poisson_face_gradient.png.
 #
 # Usage: doc/results/poisson_face_gradient.sh BUILD_DIR   (BUILD_DIR holds a Release fvfsi)
 # Run time on this 2-core machine: about 1 minute CPU, 2 minutes wall under load (the 262,144-cell 3D runs are most of it).
@@ -12,10 +13,12 @@ set -uo pipefail
 build=${1:?usage: poisson_face_gradient.sh BUILD_DIR}
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 out=$(mktemp -d)
+table="$out/table.md"
+emit() { echo "$1" | tee -a "$table"; } # a table line, also kept for the plot
 echo "commit: $(git -C "$repo" rev-parse --short HEAD)"
 echo
-echo "| dim | face gradient | cells | max cell error | order | max face-gradient error | order | L2 face-gradient error | order | max Dirichlet-face gradient error | order | correction iterations | wall [s] |"
-echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+emit "| dim | face gradient | cells | max cell error | order | max face-gradient error | order | L2 face-gradient error | order | max Dirichlet-face gradient error | order | correction iterations | wall [s] |"
+emit "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for dim in 2 3; do
   if [[ $dim == 2 ]]; then coarse="8: 0: 1: true"; levels="1 2 3 4 5"; else coarse="4: 0: 1: true"; levels="1 2 3 4"; fi
   for face_gradient in linear quadratic; do
@@ -40,9 +43,14 @@ print(" | ".join([str(s["n_cells"])] + cols + [str(r["correction_iterations"]), 
 print(" ".join(repr(r[k]) for k in keys))
 EOF
 )
-      echo "| ${dim}D | $face_gradient | $(echo "$row" | head -1) |"
+      emit "| ${dim}D | $face_gradient | $(echo "$row" | head -1) |"
       previous=$(echo "$row" | tail -1)
     done
   done
 done
+# The table as doc/results/poisson_face_gradient.png.
+/usr/bin/python3 "$repo/doc/results/table_plot.py" "$table" \
+  "$repo/doc/results/poisson_face_gradient.png" --x cells --y "max cell error" \
+  --y "max face-gradient error" --group dim --group "face gradient" --logx --logy \
+  --title "Poisson on distorted meshes: linear vs quadratic face gradient"
 rm -rf "$out"

@@ -33,6 +33,7 @@ build=$(cd "$build" && pwd)
 runs=$build/solid_stability_runs
 export OMP_NUM_THREADS=1
 checks=$runs/checks.txt
+exec > >(tee "$runs/output.md") # the tables, also for the plot at the end
 mkdir -p "$runs" && : > "$checks"
 
 # Build from the committed tree (git archive of REV, default HEAD), not from the working tree:
@@ -253,3 +254,8 @@ done
 echo
 echo "== checks (every run: converged with a finite summary, or non-zero exit naming the time step)"
 cat "$checks"
+# Every table's runs as doc/results/solid_stability.png (runs that stopped are listed under it).
+sleep 1 # tee has written the tables
+/usr/bin/python3 "$repo/doc/results/table_plot.py" "$runs/output.md" \
+  "$repo/doc/results/solid_stability.png" --all --bar --x run --y "outer it." \
+  --y "max u error [m]" --logy --title "Solid hard cases (rc != 0: not plotted, listed below)"
