@@ -24,7 +24,8 @@ for diffusivity in "uniform" "inverse distance" "quadratic inverse distance"; do
       --set "Time/End time=0.125" --set "Mesh motion/Diffusivity=$diffusivity" \
       --set "Mesh motion/Moving patches=flag: 0; $A*((x - 0.249)/0.351)^2*sin(2*pi*2*t)" \
       --set "Fluid scene/Output interval=0" 2>&1)
-    if [[ -f "$dir/summary.json" ]]; then
+    # (a failed run writes summary.json too, with status "failed")
+    if [[ -f "$dir/summary.json" ]] && grep -q '"status": "completed"' "$dir/summary.json"; then
       ratio=$(python3 -c "import json; print('%.3f' % json.load(open('$dir/summary.json'))['results']['min_cell_volume_ratio'])")
       wall=$(python3 -c "import json; print('%.1f' % json.load(open('$dir/summary.json'))['wall_seconds'])")
       emit "| $diffusivity | $A | $ratio | $wall |"

@@ -325,10 +325,11 @@ namespace fvfsi
     worst = Utilities::MPI::broadcast(moved.comm(), worst, stats.min_index);
     if (stats.min > 0)
       return stats.min;
-    std::ostringstream where;
+    std::ostringstream when, where; // six significant digits, as the progress lines
+    when << t;
     where << worst;
     throw std::runtime_error(
-      "Mesh motion: a cell is inverted (volume <= 0) at t = " + Utilities::to_string(t) +
+      "Mesh motion: a cell is inverted (volume <= 0) at t = " + when.str() +
       " s, the cell with reference centroid (" + where.str() +
       ") m; the displacement is too large for this mesh (try another Mesh "
       "motion/Diffusivity, see doc/results/mesh_motion.md, or a finer "
