@@ -328,12 +328,11 @@ namespace fvfsi
     std::ostringstream when, where; // six significant digits, as the progress lines
     when << t;
     where << worst;
-    throw std::runtime_error(
-      "Mesh motion: a cell is inverted (volume <= 0) at t = " + when.str() +
-      " s, the cell with reference centroid (" + where.str() +
-      ") m; the displacement is too large for this mesh (try another Mesh "
-      "motion/Diffusivity, see doc/results/mesh_motion.md, or a finer "
-      "mesh near the moving patches)");
+    throw std::runtime_error("Mesh motion: a cell is inverted (volume <= 0) at t = " + when.str() +
+                             " s, the cell with reference centroid (" + where.str() +
+                             ") m; the displacement is too large for this mesh (try another Mesh "
+                             "motion/Diffusivity, see doc/results/mesh_motion.md, or a finer "
+                             "mesh near the moving patches)");
   }
 
   template double min_volume_ratio(const FVGeometry<2>&, const FVGeometry<2>&, double);

@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fvfsi/base/parsed_function.h>
+#include <fvfsi/io/progress.h>
 #include <fvfsi/mesh/mesh_builder.h>
 #include <fvfsi/scenes/fluid_scene.h>
 
@@ -250,6 +251,8 @@ namespace fvfsi
     const unsigned int total = clock.n_steps();
     const auto mesh_state = [this](MeshArchive<dim>& a) { checkpoint_state(a); };
     const auto global_state = [this](GlobalArchive& a) { checkpoint_state(a); };
+    Progress progress;
+    progress.new_phase(clock.step()); // a restarted run: the time left from its own steps
     for (unsigned int step = clock.step() + 1; step <= total; ++step)
     {
       this->capture_step_start(mesh_state, global_state);
@@ -284,7 +287,7 @@ namespace fvfsi
               << ", lift " << history_lift.back()
               << (motion ? ", min V/V_ref " + std::to_string(result.min_volume_ratio)
                          : std::string())
-              << "\n";
+              << ", " << progress.elapsed_and_left(step, total) << "\n";
       if (this->output_due(step))
         this->write_output(*fluid);
       if (this->checkpoint_due(step))

@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fvfsi/base/parsed_function.h>
+#include <fvfsi/io/progress.h>
 #include <fvfsi/mesh/mesh_builder.h>
 #include <fvfsi/scenes/solid_scene.h>
 
@@ -143,6 +144,8 @@ namespace fvfsi
                                "(Solid/Transient = true)");
     if (this->restarting())
       this->restore_checkpoint(mesh_state, global_state);
+    Progress progress;
+    progress.new_phase(clock.step()); // a restarted run: the time left from its own steps
     for (unsigned int step = clock.step() + 1; step <= n_steps; ++step)
     {
       if (solid_parameters.transient)
@@ -169,7 +172,8 @@ namespace fvfsi
       record_time_history();
       if (solid_parameters.transient && this->progress_due(step, n_steps))
         pcout << "fvfsi: solid step " << step << "/" << n_steps << ", t = " << clock.time()
-              << " s, " << iterations << " outer iterations\n";
+              << " s, " << iterations << " outer iterations, "
+              << progress.elapsed_and_left(step, n_steps) << "\n";
       if (this->output_due(step))
         this->write_output(*solid);
       if (this->checkpoint_due(step))
