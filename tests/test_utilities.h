@@ -7,6 +7,8 @@
 
 #include <fvfsi/scenes/poisson.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -42,6 +44,30 @@ namespace fvfsi_test
       rows.push_back(row);
     }
     return rows;
+  }
+
+  /// Two history tables (read_table) line by line: the largest |a - b| of the vector made of
+  /// `columns` (e.g. drag and lift), relative to the largest |b| of that vector; 1 if the tables
+  /// differ in length or are empty.
+  inline double vector_difference(const std::vector<std::vector<double>>& a,
+                                  const std::vector<std::vector<double>>& b,
+                                  const std::vector<unsigned int>& columns)
+  {
+    if (a.size() != b.size() || a.empty())
+      return 1;
+    double scale = 1e-300, difference = 0;
+    for (unsigned int i = 0; i < b.size(); ++i)
+    {
+      double norm = 0, d = 0;
+      for (const unsigned int c : columns)
+      {
+        norm += b[i][c] * b[i][c];
+        d += (a[i][c] - b[i][c]) * (a[i][c] - b[i][c]);
+      }
+      scale = std::max(scale, std::sqrt(norm));
+      difference = std::max(difference, std::sqrt(d));
+    }
+    return difference / scale;
   }
 
   inline std::string yes_no(const bool b)

@@ -61,18 +61,9 @@ print(f"fvfsi:      {fvc} cells, {fi[-1]} pseudo time steps, wall s {['%.2f' % x
 print(f"fvfsi / simpleFoam wall time, pair by pair: {['%.3f' % (b / a) for a, b in zip(of, fv)]}, "
       f"median {st.median([b / a for a, b in zip(of, fv)]):.3f}")
 # The pairs as a PNG next to the tables (run from the project root).
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-fig, (a1, a2) = plt.subplots(1, 2, figsize=(9, 3.5))
-pairs = range(1, len(of) + 1)
-a1.bar([p - 0.2 for p in pairs], of, 0.4, label="simpleFoam (%d cells)" % ofc)
-a1.bar([p + 0.2 for p in pairs], fv, 0.4, label="fvfsi (%d cells)" % fvc)
-a1.set_xlabel("pair (run one after the other)"); a1.set_ylabel("wall time [s]"); a1.legend(fontsize=8)
-a2.bar(pairs, [b / a for a, b in zip(of, fv)])
-a2.set_xlabel("pair"); a2.set_ylabel("fvfsi / simpleFoam wall time")
-fig.suptitle("Turek-Hron CFD2: fvfsi beside OpenFOAM's simpleFoam", fontsize=10)
-fig.tight_layout()
-fig.savefig("doc/results/openfoam_cfd2_cost.png", dpi=110)
-print("plot: doc/results/openfoam_cfd2_cost.png")
+import subprocess
+subprocess.run([sys.executable, "doc/benchmarks/pair_plot.py", "doc/results/openfoam_cfd2_cost.png",
+                "Turek-Hron CFD2: fvfsi beside OpenFOAM's simpleFoam", "simpleFoam (%d cells)" % ofc, "fvfsi (%d cells)" % fvc,
+                "fvfsi / simpleFoam wall time", " ".join(map(str, of)), " ".join(map(str, fv)),
+                " ".join(map(str, [b / a for a, b in zip(of, fv)]))], check=True)
 EOP

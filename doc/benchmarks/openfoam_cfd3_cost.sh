@@ -58,18 +58,9 @@ print(f"fvfsi:      {fvc} cells, {n} steps, wall s {['%.2f' % x for x in fv]}, m
       f"{st.median(fv) / (fvc * n) * 1e6:.3f} us per cell-step")
 print(f"fvfsi / pimpleFoam cost per cell-step, pair by pair: {['%.3f' % r for r in ratios]}, median {st.median(ratios):.3f}")
 # The pairs as a PNG next to the tables (run from the project root).
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-fig, (a1, a2) = plt.subplots(1, 2, figsize=(9, 3.5))
-pairs = range(1, len(of) + 1)
-a1.bar([p - 0.2 for p in pairs], of, 0.4, label="pimpleFoam (%d cells)" % ofc)
-a1.bar([p + 0.2 for p in pairs], fv, 0.4, label="fvfsi (%d cells)" % fvc)
-a1.set_xlabel("pair (run one after the other)"); a1.set_ylabel("wall time [s]"); a1.legend(fontsize=8)
-a2.bar(pairs, ratios)
-a2.set_xlabel("pair"); a2.set_ylabel("fvfsi / pimpleFoam cost per cell-step")
-fig.suptitle("Turek-Hron CFD3: fvfsi beside OpenFOAM's pimpleFoam", fontsize=10)
-fig.tight_layout()
-fig.savefig("doc/results/openfoam_cfd3_cost.png", dpi=110)
-print("plot: doc/results/openfoam_cfd3_cost.png")
+import subprocess
+subprocess.run([sys.executable, "doc/benchmarks/pair_plot.py", "doc/results/openfoam_cfd3_cost.png",
+                "Turek-Hron CFD3: fvfsi beside OpenFOAM's pimpleFoam", "pimpleFoam (%d cells)" % ofc, "fvfsi (%d cells)" % fvc,
+                "fvfsi / pimpleFoam cost per cell-step", " ".join(map(str, of)), " ".join(map(str, fv)),
+                " ".join(map(str, ratios))], check=True)
 EOP

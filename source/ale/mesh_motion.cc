@@ -112,7 +112,7 @@ namespace fvfsi
     {
       MovingPatch patch;
       patch.name = name;
-      patch.id = mesh_parameters.patch_id(name);
+      patch.id = mesh_parameters.patch_id(name, "Mesh motion/Moving patches");
       patch.expression = std::make_unique<FunctionParser<dim>>(dim);
       initialize_function(*patch.expression, expression, "Mesh motion/Moving patches");
       moving.push_back(std::move(patch));
@@ -211,7 +211,9 @@ namespace fvfsi
     for (const auto& patch : moving)
       for (const unsigned int v : patch.vertices)
         for (unsigned int j = 0; j < dim; ++j)
-          d_vertex[v][j] = patch.expression ? patch.expression->value(X[v], j) : patch.given[v][j];
+          d_vertex[v][j] = patch.expression ? checked_value(*patch.expression, X[v], j,
+                                                            "Mesh motion/Moving patches")
+                                            : patch.given[v][j];
     for (unsigned int v = 0; v < d_vertex.size(); ++v)
       if (boundary_vertex[v] == 0)
         d_vertex[v] = Tensor<1, dim>();
@@ -276,6 +278,10 @@ namespace fvfsi
   template <int dim>
   void MeshMotion<dim>::checkpoint(MeshArchive<dim>& archive)
   {
+    // Only the Laplace motion has a state (the last solution, the warm start of the next solve);
+    // a prescribed motion's vectors are empty.
+    if (prm.type != MeshMotionParameters::Type::laplace)
+      return;
     for (unsigned int j = 0; j < dim; ++j)
     {
       archive.cells(d_cell[j]);
@@ -296,7 +302,8 @@ namespace fvfsi
       prescribed->set_time(t);
       for (unsigned int v = 0; v < x.size(); ++v)
         for (unsigned int j = 0; j < dim; ++j)
-          x[v][j] += prescribed->value(reference.vertices()[v], j);
+          x[v][j] +=
+            checked_value(*prescribed, reference.vertices()[v], j, "Mesh motion/Displacement");
       return x;
     }
     if (prm.type == MeshMotionParameters::Type::laplace)

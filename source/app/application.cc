@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/patterns.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
@@ -80,7 +81,7 @@ namespace fvfsi
     }
 
     const char* usage =
-      "usage: fvfsi [CASE.prm] [--set \"Section/Sub/Key=value\"]...\n"
+      "usage: fvfsi [CASE.prm] [--set \"Section/Sub/Key=value\"]... [--steps N]\n"
       "       fvfsi --print-parameters [CASE.prm]\n"
       "       fvfsi --help\n"
       "\n"
@@ -89,6 +90,8 @@ namespace fvfsi
       "meshes, about 12 s on one core, written to output-demo/ with a PNG plot of its history.\n"
       "`--set` overrides one parameter after the file is read and may be repeated, e.g.\n"
       "  fvfsi case.prm --set \"Mesh/Global refinements=5\" --set \"Output directory=/tmp/run5\"\n"
+      "`--steps N` stops after N time steps (a steady run: after N iterations of each of its\n"
+      "loops) as if the run had ended there: for trying a case.\n"
       "`--print-parameters` prints every parameter with its value (default or from CASE.prm) and\n"
       "its documentation. Run in parallel with `mpirun -np N fvfsi CASE.prm`.\n"
       "Output: VTU/PVTU (+ .pvd) fields, text tables and summary.json in `Output directory`.\n";
@@ -131,6 +134,7 @@ namespace fvfsi
     struct CommandLine
     {
       bool help = false, print = false;
+      unsigned int steps = 0; ///< --steps N (0: none)
       std::string file;
       std::vector<std::string> overrides;
     };
@@ -148,6 +152,13 @@ namespace fvfsi
           if (i + 1 == args.size())
             throw std::runtime_error("--set needs an argument \"Section/Key=value\"");
           c.overrides.push_back(args[++i]);
+        }
+        else if (args[i] == "--steps")
+        {
+          const std::string n = i + 1 < args.size() ? args[++i] : std::string();
+          if (!Patterns::Integer(1).match(n))
+            throw std::runtime_error("--steps needs a positive whole number, not `" + n + "`");
+          c.steps = Utilities::string_to_int(n);
         }
         else if (args[i].rfind("-", 0) == 0)
           throw std::runtime_error("unknown option `" + args[i] + "` (see fvfsi --help)");
@@ -181,6 +192,8 @@ namespace fvfsi
       summary.set("scene", selection_name(RunParameters::scene_names, parameters.run.scene));
       summary.set("dim", parameters.run.dim);
       summary.set("n_mpi_ranks", Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+      if (parameters.time.step_limit > 0) // --steps: the results are those of a shortened run
+        summary.set("step_limit", parameters.time.step_limit);
       try
       {
         if (parameters.run.dim == 2)
@@ -235,6 +248,7 @@ namespace fvfsi
       }
       AllParameters parameters;
       read_parameters(parameters, command.file, command.overrides);
+      parameters.time.step_limit = command.steps;
       if (command.print)
       {
         if (root)

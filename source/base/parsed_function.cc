@@ -4,6 +4,8 @@
 #include <fvfsi/base/exceptions.h>
 #include <fvfsi/base/parsed_function.h>
 
+#include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace fvfsi
@@ -37,6 +39,26 @@ namespace fvfsi
     }
   }
 
+  template <int dim>
+  double checked_value(const FunctionParser<dim>& f, const Point<dim>& point,
+                       const unsigned int component, const std::string& parameter_name)
+  {
+    const double v = f.value(point, component);
+    if (!(std::abs(v) <= max_input_value))
+    {
+      std::ostringstream message;
+      message << parameter_name << " gives " << v << " (component " << component << ") at ("
+              << point << "), t = " << f.get_time() << " s: values must be finite and within +-"
+              << max_input_value;
+      throw std::runtime_error(message.str());
+    }
+    return v;
+  }
+
+  template double checked_value(const FunctionParser<2>&, const Point<2>&, unsigned int,
+                                const std::string&);
+  template double checked_value(const FunctionParser<3>&, const Point<3>&, unsigned int,
+                                const std::string&);
   template void initialize_function(FunctionParser<2>&, const std::string&, const std::string&);
   template void initialize_function(FunctionParser<3>&, const std::string&, const std::string&);
 } // namespace fvfsi

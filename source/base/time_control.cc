@@ -1,5 +1,7 @@
+#include <fvfsi/base/patterns.h>
 #include <fvfsi/base/time_control.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -13,8 +15,9 @@ namespace fvfsi
       "Time step", time_step,
       "dt [s] of a transient run: the fluid, the solid, the mesh motion and the "
       "coupling share it (a steady solver ignores it; a steady solid takes one step).",
-      dealii::Patterns::Double(0));
-    prm.add_parameter("End time", end_time, "[s] of a transient run.", dealii::Patterns::Double(0));
+      PositiveDouble(1e10));
+    prm.add_parameter("End time", end_time, "[s] of a transient run.",
+                      dealii::Patterns::Double(0, 1e10));
     prm.add_parameter("Time step control", halvings,
                       "FSI: how many times a failed time step (a linear solve that fails, a "
                       "field that is not finite, coupling or solid iterations that do not "
@@ -27,16 +30,25 @@ namespace fvfsi
   }
 
   TimeControl::TimeControl(const TimeParameters& parameters)
-      : TimeControl(parameters.time_step, parameters.end_time)
+      : TimeControl(parameters.time_step, parameters.end_time, parameters.step_limit)
   {
   }
 
-  TimeControl::TimeControl(const double time_step, const double end_time)
-      : dt(time_step), next_dt(time_step), end(end_time)
+  TimeControl::TimeControl(const double time_step, const double end_time,
+                           const unsigned int step_limit)
+      : dt(time_step), next_dt(time_step), end(end_time), limit(step_limit)
   {
     if (!(time_step > 0))
       throw std::runtime_error("Time/Time step must be positive (it is " +
                                std::to_string(time_step) + ")");
+    // The step counter is an unsigned int: a run of more than a billion steps is a typo.
+    if (!(end_time / time_step < 1e9))
+    {
+      std::ostringstream message;
+      message << "Time/End time / Time/Time step = " << end_time << " s / " << time_step
+              << " s: more than 1e9 time steps";
+      throw std::runtime_error(message.str());
+    }
   }
 
   void TimeControl::advance()
@@ -50,7 +62,8 @@ namespace fvfsi
 
   unsigned int TimeControl::n_steps() const
   {
-    return static_cast<unsigned int>(std::round(end / next_dt));
+    const auto n = static_cast<unsigned int>(std::round(end / next_dt));
+    return limit > 0 ? std::min(n, limit) : n;
   }
 
   std::string TimeControl::step_name() const

@@ -1,3 +1,4 @@
+#include <fvfsi/base/patterns.h>
 #include <fvfsi/coupling/coupling_acceleration.h>
 
 #include <cmath>
@@ -43,7 +44,7 @@ namespace fvfsi
     prm.add_parameter("Tolerance", tolerance,
                       "A time step has converged when |d~ - d|_2 <= this x |d~|_2 over the "
                       "interface vertices (Eq. 30), or when Residual reduction says so.",
-                      Patterns::Double(0));
+                      PositiveDouble(1));
     prm.add_parameter("Residual reduction", residual_reduction,
                       "Also converged when |d~ - d|_2 <= this x the largest |d~ - d|_2 of the "
                       "time step's iterations (Lindner et al. 2015: 1e-6); with Tolerance, "

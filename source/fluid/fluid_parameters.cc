@@ -1,4 +1,5 @@
 #include <fvfsi/base/patch_list.h>
+#include <fvfsi/base/patterns.h>
 #include <fvfsi/base/selection.h>
 #include <fvfsi/fluid/fluid_parameters.h>
 
@@ -26,8 +27,8 @@ namespace fvfsi
   {
     prm.enter_subsection("Fluid");
     prm.add_parameter("Density", rho, "rho [kg/m^3] (forces and pressure output are in N, Pa).",
-                      Patterns::Double(0));
-    prm.add_parameter("Kinematic viscosity", nu, "nu [m^2/s].", Patterns::Double(0));
+                      PositiveDouble(1e10));
+    prm.add_parameter("Kinematic viscosity", nu, "nu [m^2/s].", PositiveDouble(1e10));
     prm.add_parameter(
       "Body force", body_force,
       "g [m/s^2] per unit mass, dim expressions of x, y[, z], t separated by `;` (`0`: "
@@ -51,7 +52,7 @@ namespace fvfsi
       "Steady tolerance", steady_tolerance,
       "Steady: stop when max|u^k - u^(k-1)| / U over one pseudo step is below this (U: "
       "the larger of max|u| and sqrt(max p - min p), p kinematic).",
-      Patterns::Double(0));
+      PositiveDouble(1));
     prm.add_parameter(
       "Max steady iterations", max_steady_iterations,
       "Steady: limit of pseudo time steps (exceeding it stops the run with an error).",

@@ -105,7 +105,8 @@ namespace fvfsi
     initialize_function(u0, prm.initial_velocity, "Fluid/Initial velocity");
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
       for (unsigned int j = 0; j < dim; ++j)
-        u.components[j].local_element(c) = u0.value(geometry.centroid[c], j);
+        u.components[j].local_element(c) =
+          checked_value(u0, geometry.centroid[c], j, "Fluid/Initial velocity");
     u.update_ghost_values();
     update_velocity_boundary_values();
     update_velocity_gradients();
@@ -138,7 +139,7 @@ namespace fvfsi
       {
         case Type::velocity_inlet:
           for (unsigned int j = 0; j < dim; ++j)
-            boundary_u[f][j] = conditions.function(f).value(face.centre, j);
+            boundary_u[f][j] = conditions.value(f, face.centre, j);
           break;
         case Type::wall:
         {
@@ -183,7 +184,7 @@ namespace fvfsi
     {
       const auto& face = geometry.faces[f];
       if (conditions.type(f) == Type::outlet)
-        boundary_p[f] = conditions.function(f).value(face.centre) / prm.rho;
+        boundary_p[f] = conditions.value(f, face.centre) / prm.rho;
       else
         boundary_p[f] = p.local_element(face.P) + face.d * grad_p[face.P];
       pressure_bc.value[f] = boundary_p[f];
@@ -307,7 +308,8 @@ namespace fvfsi
     {
       body_force_value[j].resize(geometry.n_owned_cells());
       for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
-        body_force_value[j][c] = body_force.value(geometry.centroid[c], j);
+        body_force_value[j][c] =
+          checked_value(body_force, geometry.centroid[c], j, "Fluid/Body force");
     }
   }
 
@@ -445,12 +447,11 @@ namespace fvfsi
   }
 
   template <int dim>
-  Tensor<1, dim> FluidSolver<dim>::patches_force(const std::vector<std::string>& names,
-                                                 const MeshParameters& mesh) const
+  Tensor<1, dim> FluidSolver<dim>::patches_force(const std::vector<unsigned int>& ids) const
   {
     Tensor<1, dim> force;
-    for (const auto& name : names)
-      force += patch_force(mesh.patch_id(name));
+    for (const unsigned int id : ids)
+      force += patch_force(id);
     return force;
   }
 

@@ -72,7 +72,7 @@ namespace fvfsi
         pcout << "fvfsi: fluid pseudo time step " << k << ": relative change " << change
               << " (tolerance " << prm.steady_tolerance << "), continuity error "
               << continuity_error() << "\n";
-      if (change < prm.steady_tolerance)
+      if (change < prm.steady_tolerance || clock.step_limit_reached(k))
         return k;
       window.push_back(change);
       if (window.size() < steady_window)

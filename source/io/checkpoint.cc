@@ -193,6 +193,9 @@ namespace fvfsi
   template <int dim>
   void MeshArchive<dim>::cells(CellVector& v)
   {
+    if (v.locally_owned_size() + v.get_partitioner()->n_ghost_indices() !=
+        geometry->n_relevant_cells())
+      throw std::logic_error("MeshArchive: a cell vector that is not of the mesh's size");
     if (in_memory) // owned and ghost values: they follow each other in v's memory
       return copy(v.begin(), geometry->n_relevant_cells());
     if (is_loading)

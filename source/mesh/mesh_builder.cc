@@ -1,3 +1,5 @@
+#include <deal.II/base/patterns.h>
+#include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
@@ -12,6 +14,7 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 namespace fvfsi
@@ -97,6 +100,51 @@ namespace fvfsi
         dir[dim - 1] = cos_theta;
       }
       return dir;
+    }
+
+    /// deal.II's generators read their counts (subdivisions, shells, slices) as unsigned ints:
+    /// `-20` wraps to 4 294 967 276 and the generator allocates until memory runs out, and deal.II
+    /// checks zero only in Debug builds. The count arguments (`:`-separated, numbered from 0) of
+    /// each generator of GridGenerator::generate_from_name_and_arguments, and their least value.
+    void check_generator_counts(const MeshParameters& params)
+    {
+      struct Count
+      {
+        unsigned int argument, least;
+      };
+      static const std::map<std::string, std::vector<Count>> counts = {
+        {"subdivided_hyper_cube", {{0, 1}}},
+        {"subdivided_hyper_rectangle", {{0, 1}}},
+        {"cheese", {{0, 0}}},
+        {"hyper_cross", {{0, 0}}},
+        {"plate_with_a_hole", {{7, 0}, {8, 0}, {10, 1}}},
+        {"channel_with_cylinder", {{1, 1}}},
+        {"hyper_shell", {{3, 0}}},
+        {"half_hyper_shell", {{3, 0}}},
+        {"quarter_hyper_shell", {{3, 0}}},
+        {"cylinder_shell", {{3, 0}, {4, 0}}},
+        {"hyper_cube_with_cylindrical_hole", {{3, 1}}},
+        {"concentric_hyper_shells", {{3, 0}, {5, 1}}},
+        {"moebius", {{0, 1}, {1, 0}}},
+        {"torus", {{2, 1}}}};
+      const auto it = counts.find(params.generator);
+      if (it == counts.end())
+        return;
+      const std::vector<std::string> arguments =
+        Utilities::split_string_list(params.generator_arguments, ':');
+      constexpr unsigned int most = 100000;
+      for (const auto& [argument, least] : it->second)
+        if (argument < arguments.size() &&
+            // subdivided_hyper_rectangle also takes step sizes (reals) in place of counts
+            !(params.generator == "subdivided_hyper_rectangle" &&
+              arguments[argument].find('.') != std::string::npos))
+          for (const auto& entry : Utilities::split_string_list(arguments[argument], ','))
+            if (!Patterns::Integer(least, most).match(entry))
+              throw std::runtime_error(
+                "argument " + std::to_string(argument + 1) + " of " + params.generator +
+                " is a count (of cells, shells or slices): a whole "
+                "number from " +
+                std::to_string(least) + " to " + std::to_string(most) + ", not `" + entry + "`");
     }
   } // namespace
 
@@ -195,21 +243,35 @@ namespace fvfsi
                                  "/File name is empty");
       read_mesh_file(resolve(params.file_name, prm_directory), coarse, params.section);
     }
-    else if (is_benchmark_mesh(params.generator))
-      make_benchmark_mesh(params.generator, params.generator_arguments, coarse);
     else
     {
+      const std::string generator = params.section + "/Generator = `" + params.generator +
+                                    "` with " + params.section + "/Generator arguments = `" +
+                                    params.generator_arguments + "`";
       try
       {
-        GridGenerator::generate_from_name_and_arguments(coarse, params.generator,
-                                                        params.generator_arguments);
+        if (is_benchmark_mesh(params.generator))
+          make_benchmark_mesh(params.generator, params.generator_arguments, coarse);
+        else
+        {
+          check_generator_counts(params);
+          GridGenerator::generate_from_name_and_arguments(coarse, params.generator,
+                                                          params.generator_arguments);
+        }
       }
       catch (const std::exception& e)
       {
-        throw std::runtime_error(params.section + "/Generator = `" + params.generator + "` with " +
-                                 params.section + "/Generator arguments = `" +
-                                 params.generator_arguments + "` failed: " + concise_message(e));
+        throw std::runtime_error(generator + " failed: " + concise_message(e));
       }
+      // deal.II checks its generators' arguments only in Debug builds: a zero, negative or
+      // non-finite size gives cells without volume, which would make NaN of every field.
+      if (coarse.n_active_cells() == 0)
+        throw std::runtime_error(generator + " gives no cells");
+      for (const auto& cell : coarse.active_cell_iterators())
+        if (!(cell->measure() > 0) || !std::isfinite(cell->measure()))
+          throw std::runtime_error(generator + " gives a cell of volume " +
+                                   Utilities::to_string(cell->measure()) +
+                                   ": the arguments must describe a mesh of positive size");
     }
     if (params.distortion > 0 && params.distort_coarse_mesh)
       GridTools::distort_random(params.distortion, coarse, true, params.distortion_seed);

@@ -50,17 +50,28 @@ namespace fvfsi
     return it != patch_names.end() ? it->second : "patch_" + std::to_string(id);
   }
 
-  unsigned int MeshParameters::patch_id(const std::string& name) const
+  unsigned int MeshParameters::patch_id(const std::string& name, const std::string& parameter) const
   {
     for (const auto& [id, n] : patch_names)
       if (n == name)
         return id;
-    if (name.rfind("patch_", 0) == 0)
-      return std::stoul(name.substr(6));
+    const std::string digits = name.rfind("patch_", 0) == 0 ? name.substr(6) : "";
+    if (!digits.empty() && digits.size() < 6 &&
+        digits.find_first_not_of("0123456789") == std::string::npos)
+      return std::stoul(digits);
     std::string known;
     for (const auto& [id, n] : patch_names)
       known += " " + n;
-    throw std::runtime_error("unknown patch `" + name + "` (" + section +
+    throw std::runtime_error(parameter + ": unknown patch `" + name + "` (" + section +
                              "/Patch names has:" + known + ")");
+  }
+
+  std::vector<unsigned int> MeshParameters::patch_ids(const std::vector<std::string>& names,
+                                                      const std::string& parameter) const
+  {
+    std::vector<unsigned int> ids;
+    for (const auto& name : names)
+      ids.push_back(patch_id(name, parameter));
+    return ids;
   }
 } // namespace fvfsi

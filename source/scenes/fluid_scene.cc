@@ -166,7 +166,8 @@ namespace fvfsi
   template <int dim>
   Tensor<1, dim> FluidScene<dim>::body_force() const
   {
-    return fluid->patches_force(scene_parameters.force_patches, mesh_parameters);
+    return fluid->patches_force(
+      mesh_parameters.patch_ids(scene_parameters.force_patches, "Fluid scene/Force patches"));
   }
 
   template <int dim>
@@ -303,14 +304,14 @@ namespace fvfsi
     summary.set("n_cells", fv->n_global_cells());
     summary.set_result("time_steps", result.n_time_steps);
     summary.set_result("continuity_error", fluid->continuity_error());
-    if (!scene_parameters.force_patches.empty())
+    if (!scene_parameters.force_patches.empty() && !history_drag.empty()) // no steps: none
     {
       summary.set_result("drag", history_drag.back());
       summary.set_result("lift", history_lift.back());
     }
     if (motion)
       summary.set_result("min_cell_volume_ratio", result.min_volume_ratio);
-    for (unsigned int i = 0; i < probes.size(); ++i)
+    for (unsigned int i = 0; i < final_probe_values.size(); ++i) // none before the first step
     {
       const auto& [u, p] = final_probe_values[i];
       summary.set_result("point_" + probes.name(i) + "_velocity",
@@ -327,7 +328,7 @@ namespace fvfsi
       summary.set_result("max_pressure_error", result.max_pressure_error);
       summary.set_result("l2_pressure_error", result.l2_pressure_error);
     }
-    if (fluid_parameters.transient && scene_parameters.analysis_window > 0)
+    if (fluid_parameters.transient && scene_parameters.analysis_window > 0 && !history_t.empty())
     {
       std::vector<double> t, drag, lift;
       for (unsigned int i = 0; i < history_t.size(); ++i)
@@ -338,12 +339,15 @@ namespace fvfsi
           lift.push_back(history_lift[i]);
         }
       const auto d = periodic_statistics(t, drag), l = periodic_statistics(t, lift);
-      summary.set_result("drag_mean_amplitude_frequency", {d.mean, d.amplitude, d.frequency});
-      summary.set_result("lift_mean_amplitude_frequency", {l.mean, l.amplitude, l.frequency});
-      if (d.n_periods == 0 || l.n_periods == 0)
+      if (d.n_periods > 0 && l.n_periods > 0)
+      {
+        summary.set_result("drag_mean_amplitude_frequency", {d.mean, d.amplitude, d.frequency});
+        summary.set_result("lift_mean_amplitude_frequency", {l.mean, l.amplitude, l.frequency});
+      }
+      else // no numbers rather than NaN (a JSON null) in summary.json
         summary.set_text_result(
           "periodic_statistics_note",
-          "null: the last " + Utilities::to_string(scene_parameters.analysis_window) +
+          "none: the last " + Utilities::to_string(scene_parameters.analysis_window) +
             " s (Fluid scene/Analysis window) hold no full period of drag or lift");
     }
   }

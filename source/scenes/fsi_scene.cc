@@ -12,18 +12,6 @@ namespace fvfsi
 {
   using namespace dealii;
 
-  namespace
-  {
-    std::vector<unsigned int> patch_ids(const MeshParameters& mesh,
-                                        const std::vector<std::string>& names)
-    {
-      std::vector<unsigned int> ids;
-      for (const auto& name : names)
-        ids.push_back(mesh.patch_id(name));
-      return ids;
-    }
-  } // namespace
-
   template <int dim>
   FsiScene<dim>::FsiScene(const FsiSceneInput& input, MPI_Comm comm,
                           const std::string& prm_directory, const std::string& output_directory)
@@ -76,10 +64,12 @@ namespace fvfsi
     motion = std::make_unique<MeshMotion<dim>>(*fluid_reference_fv, fluid_mesh_parameters,
                                                fluid_scene_parameters.mesh_motion, clock);
 
-    std::vector<Point<dim>> solid_vertices;
+    // The solid's mesh never moves (total Lagrangian): the positions saved with it are its
+    // reference ones, read only because every saved mesh has them.
+    std::vector<Point<dim>> reference_positions;
     if (!checkpoints.restart_from.empty())
       solid_restart = load_mesh(restart, "solid_mesh", solid_mesh_parameters, solid_tria,
-                                prm_directory, solid_vertices);
+                                prm_directory, reference_positions);
     else
       make_mesh(solid_mesh_parameters, solid_tria, prm_directory);
     solid_fv = std::make_unique<FVGeometry<dim>>(solid_tria);
@@ -94,10 +84,12 @@ namespace fvfsi
     // The interface, whole on every rank, and the maps between its two sides (computed once,
     // on the undeformed meshes, where the two sides coincide).
     fluid_zone = std::make_unique<InterfaceZone<dim>>(
-      *fluid_fv, patch_ids(fluid_mesh_parameters, prm.coupling.fluid_interface),
+      *fluid_fv,
+      fluid_mesh_parameters.patch_ids(prm.coupling.fluid_interface, "Coupling/Fluid interface"),
       "Coupling/Fluid interface");
     solid_zone = std::make_unique<InterfaceZone<dim>>(
-      *solid_fv, patch_ids(solid_mesh_parameters, prm.coupling.solid_interface),
+      *solid_fv,
+      solid_mesh_parameters.patch_ids(prm.coupling.solid_interface, "Coupling/Solid interface"),
       "Coupling/Solid interface");
     traction_map = std::make_unique<FaceInterpolation<dim>>(*fluid_zone, *solid_zone);
     displacement_map = std::make_unique<VertexProjection<dim>>(*solid_zone, *fluid_zone);
@@ -251,6 +243,11 @@ namespace fvfsi
   {
     acceleration->new_time_step();
     double residual = 0;
+    const std::string impulsive_start_hint =
+      !steady && result.n_coupled_steps == 0
+        ? "\n(the first coupled time step: if the flow starts impulsively, let it develop on the "
+          "fixed mesh first, Coupling/Start time)"
+        : "";
     for (unsigned int k = 1; k <= prm.coupling.max_iterations; ++k)
     {
       InterfaceVector next;
@@ -271,18 +268,16 @@ namespace fvfsi
           (k > 2 ? "\n(a coupling iteration that diverges ends like this: use Coupling/Method = "
                    "IQN-ILS or Aitken, or a smaller Coupling/Relaxation)"
                  : std::string()) +
-          (!steady && result.n_coupled_steps == 0
-             ? "\n(the first coupled time step: if the flow starts impulsively, let it develop "
-               "on the fixed mesh first, Coupling/Start time)"
-             : std::string()));
+          impulsive_start_hint);
       }
       residual = acceleration->relative_residual();
       if (!std::isfinite(residual))
         throw std::runtime_error("FSI: the interface residual is not finite at " + step_name() +
-                                 ", coupling iteration " + std::to_string(k));
+                                 ", coupling iteration " + std::to_string(k) +
+                                 impulsive_start_hint);
       if (steady)
         record_steady_iteration(k, residual);
-      if (acceleration->converged()) // Tolerance (Eq. 30) or Residual reduction
+      if (acceleration->converged() || (steady && clock.step_limit_reached(k)))
         return k; // d is the accepted displacement: both solvers' states belong to it
       d = next;
     }
@@ -337,7 +332,8 @@ namespace fvfsi
   template <int dim>
   Tensor<1, dim> FsiScene<dim>::fluid_force() const
   {
-    return fluid->patches_force(fluid_scene_parameters.force_patches, fluid_mesh_parameters);
+    return fluid->patches_force(fluid_mesh_parameters.patch_ids(
+      fluid_scene_parameters.force_patches, "Fluid scene/Force patches"));
   }
 
   template <int dim>

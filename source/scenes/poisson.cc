@@ -94,7 +94,8 @@ namespace fvfsi
     for (const auto id : triangulation.get_boundary_ids())
       bc.patch_type[id] = BoundaryType::dirichlet;
     for (const auto& name : parameters.neumann_patches)
-      bc.patch_type[mesh_parameters.patch_id(name)] = BoundaryType::neumann;
+      bc.patch_type[mesh_parameters.patch_id(name, "Poisson/Neumann patches")] =
+        BoundaryType::neumann;
     bc.value.assign(fv->faces.size(), 0.0);
     for (unsigned int f = 0; f < fv->faces.size(); ++f)
     {
@@ -102,12 +103,12 @@ namespace fvfsi
       if (face.N != invalid_cell)
         continue;
       if (bc.type(face) == BoundaryType::dirichlet)
-        bc.value[f] = exact.value(face.centre);
+        bc.value[f] = checked_value(exact, face.centre, 0, "Poisson/Exact solution");
       else
       {
         Tensor<1, dim> g;
         for (unsigned int d = 0; d < dim; ++d)
-          g[d] = exact_gradient.value(face.centre, d);
+          g[d] = checked_value(exact_gradient, face.centre, d, "Poisson/Exact gradient");
         bc.value[f] = face.n * g;
       }
     }
@@ -125,7 +126,8 @@ namespace fvfsi
   {
     // The midpoint rule: s_P V_P.
     for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
-      rhs_fixed.local_element(c) = source.value(fv->centroid[c]) * fv->cell_volume[c];
+      rhs_fixed.local_element(c) =
+        checked_value(source, fv->centroid[c], 0, "Poisson/Source") * fv->cell_volume[c];
     laplacian->assemble(gamma, bc, matrix, rhs_fixed);
     matrix.compress(VectorOperation::add);
   }

@@ -77,7 +77,8 @@ namespace fvfsi
     }
     for (const auto& patch : scene_parameters.force_patches)
     {
-      const Tensor<1, dim> F = solid->patch_force(mesh_parameters.patch_id(patch));
+      const Tensor<1, dim> F =
+        solid->patch_force(mesh_parameters.patch_id(patch, "Solid scene/Force patches"));
       append(line, F);
     }
     history->write_line(line);
@@ -104,7 +105,7 @@ namespace fvfsi
       initialize_function(exact, scene_parameters.exact_stress, "Solid scene/Exact stress");
       for (const auto& patch : scene_parameters.stress_error_patches)
       {
-        const unsigned int id = mesh_parameters.patch_id(patch);
+        const unsigned int id = mesh_parameters.patch_id(patch, "Solid scene/Stress error patches");
         double max_error = 0;
         for (unsigned int f = 0; f < fv->faces.size(); ++f)
           if (fv->faces[f].kind == FaceKind::boundary && fv->faces[f].patch == id)

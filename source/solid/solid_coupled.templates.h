@@ -125,8 +125,7 @@ namespace fvfsi
     for (const unsigned int f : geometry.boundary_faces())
       if (conditions.type(f) == Type::fixed_displacement)
         for (unsigned int d = 0; d < dim; ++d)
-          boundary_u[f][d] =
-            load_factor * conditions.function(f).value(geometry.faces[f].centre, d);
+          boundary_u[f][d] = load_factor * conditions.value(f, geometry.faces[f].centre, d);
   }
 
   template <int dim>

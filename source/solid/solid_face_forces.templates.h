@@ -71,10 +71,10 @@ namespace fvfsi
     {
       const Type type = conditions.type(f);
       if (type == Type::pressure)
-        given_traction[f][0] = conditions.function(f).value(geometry.faces[f].centre);
+        given_traction[f][0] = conditions.value(f, geometry.faces[f].centre);
       else if (type == Type::traction)
         for (unsigned int d = 0; d < dim; ++d)
-          given_traction[f][d] = conditions.function(f).value(geometry.faces[f].centre, d);
+          given_traction[f][d] = conditions.value(f, geometry.faces[f].centre, d);
     }
   }
 
@@ -113,9 +113,8 @@ namespace fvfsi
       {
         case Type::fixed_displacement:
         {
-          const auto& fn = conditions.function(f);
           for (unsigned int d = 0; d < dim; ++d)
-            boundary_u[f][d] = load_factor * fn.value(face.centre, d);
+            boundary_u[f][d] = load_factor * conditions.value(f, face.centre, d);
           break;
         }
         case Type::symmetry:

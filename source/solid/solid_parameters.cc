@@ -1,4 +1,5 @@
 #include <fvfsi/base/patch_list.h>
+#include <fvfsi/base/patterns.h>
 #include <fvfsi/solid/solid_parameters.h>
 
 namespace fvfsi
@@ -24,10 +25,10 @@ namespace fvfsi
     add_selection(prm, "Plane", plane,
                   {{"plane strain", Plane::strain}, {"plane stress", Plane::stress}},
                   "2D only: plane strain or plane stress.");
-    prm.add_parameter("Young's modulus", E, "E [Pa].", Patterns::Double(0));
+    prm.add_parameter("Young's modulus", E, "E [Pa].", PositiveDouble(1e15));
     prm.add_parameter("Poisson's ratio", nu, "nu [-].", Patterns::Double(-0.999, 0.4999));
     prm.add_parameter("Density", rho, "rho_0 [kg/m^3] (reference configuration).",
-                      Patterns::Double(0));
+                      PositiveDouble(1e10));
     prm.add_parameter(
       "Body force", body_force,
       "b [m/s^2] per unit mass, dim expressions of x, y[, z], t separated by `;` (`0`: "
@@ -45,7 +46,7 @@ namespace fvfsi
     prm.add_parameter("Outer tolerance", outer_tolerance,
                       "Stop the outer (segregated) iterations of a time step when "
                       "max |du| / max |u| is below this.",
-                      Patterns::Double(0));
+                      PositiveDouble(1));
     prm.add_parameter("Max outer iterations", max_outer_iterations,
                       "Limit of outer iterations per time step (exceeding it stops the run).",
                       Patterns::Integer(1));

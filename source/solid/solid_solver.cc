@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace fvfsi
@@ -105,7 +106,9 @@ namespace fvfsi
     conditions = FaceConditions<dim, Type>(
       geometry, mesh_parameters, parameters.boundary_conditions(),
       [](const Type t) { return t == Type::pressure ? 1u : static_cast<unsigned int>(dim); },
-      "Solid", "use a traction of 0 for a free surface");
+      "Solid",
+      "Solid/Fixed displacement, Traction, Pressure, Symmetry or External traction; a free "
+      "surface: a Traction of 0");
   }
 
   template <int dim>
@@ -163,7 +166,8 @@ namespace fvfsi
     body_force.set_time(t);
     for (unsigned int j = 0; j < dim; ++j) // b at the cell centres, once per time step
       for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
-        body_force_value[j][c] = body_force.value(geometry.centroid[c], j);
+        body_force_value[j][c] =
+          checked_value(body_force, geometry.centroid[c], j, "Solid/Body force");
     conditions.set_time(t);
     evaluate_given_tractions();
     // The inertia term rho V a, a = c0 v - c1 v^o + c2 v^oo with v = c0 u - c1 u^o + c2 u^oo
@@ -204,7 +208,8 @@ namespace fvfsi
       if (!std::isfinite(change))
         throw std::runtime_error("Solid: displacement is not finite at " + clock.step_name() +
                                  ", outer iteration " + std::to_string(k));
-      if (change < parameters.outer_tolerance)
+      if (change < parameters.outer_tolerance ||
+          (!parameters.transient && clock.step_limit_reached(k)))
       {
         update_gradients();
         last_outer_iterations = k;
@@ -238,7 +243,7 @@ namespace fvfsi
       catch (const std::exception& e)
       {
         throw std::runtime_error("Solid: at " + clock.step_name() + ", outer iteration " +
-                                 std::to_string(k) + ": " + e.what());
+                                 std::to_string(k) + ": " + e.what() + divergence_hint());
       }
     // The fixed-point image g = u + du and its residual f = du; with acceleration u <- g + the
     // least-squares correction of the model built from the last iterations' differences.
@@ -274,6 +279,35 @@ namespace fvfsi
     if (!std::isfinite(max_u) || !std::isfinite(max_du))
       return std::numeric_limits<double>::quiet_NaN();
     return max_u == 0 ? 0 : max_du / max_u;
+  }
+
+  template <int dim>
+  std::string SolidSolver<dim>::divergence_hint() const
+  {
+    // |grad u| = 1e3 is a stretch by a factor of a thousand: no solution the iteration is after.
+    constexpr double beyond_any_strain = 1e3;
+    double largest = 0, traction = 0;
+    for (const unsigned int f : geometry.boundary_faces())
+      if (takes_traction(conditions.type(f)) && f < boundary_G.size())
+      {
+        const double G = boundary_G[f].norm();
+        if (!(G <= largest)) // NaN too
+        {
+          largest = std::isfinite(G) ? G : std::numeric_limits<double>::max();
+          traction = boundary_traction(f, Tensor<2, dim>()).norm();
+        }
+      }
+    const double global = Utilities::MPI::max(largest, geometry.comm());
+    const double t = Utilities::MPI::max(largest == global ? traction : 0.0, geometry.comm());
+    if (!(global > beyond_any_strain))
+      return "";
+    std::ostringstream hint;
+    hint << "\n(on the faces of Solid/Traction, Pressure or External traction the displacement "
+            "gradient has reached "
+         << global << " (traction up to " << t << " Pa against Young's modulus " << parameters.E
+         << " Pa): the load is too large for the traction boundary condition's iteration (Eq. "
+            "24) to converge from this state; lower it, or ramp it up over time)";
+    return hint.str();
   }
 
   template <int dim>

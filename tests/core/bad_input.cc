@@ -50,4 +50,5 @@ int main(int argc, char** argv)
       "outlet\nend\n",
       {"bad_patch.prm"});
   run(out, "unknown option", "", {"--frobnicate"});
+  run(out, "bad --steps", "", {"--steps", "two"});
 }

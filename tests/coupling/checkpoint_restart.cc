@@ -55,28 +55,6 @@ double table_difference(const std::vector<std::vector<double>>& a,
   return worst;
 }
 
-/// max over the lines of |a - b| for the vector of `columns`, relative to the largest |b|.
-double vector_difference(const std::vector<std::vector<double>>& a,
-                         const std::vector<std::vector<double>>& b,
-                         const std::vector<unsigned int>& columns)
-{
-  if (a.size() != b.size() || a.empty())
-    return 1;
-  double scale = 1e-300, difference = 0;
-  for (unsigned int i = 0; i < b.size(); ++i)
-  {
-    double norm = 0, d = 0;
-    for (const unsigned int c : columns)
-    {
-      norm += b[i][c] * b[i][c];
-      d += (a[i][c] - b[i][c]) * (a[i][c] - b[i][c]);
-    }
-    scale = std::max(scale, std::sqrt(norm));
-    difference = std::max(difference, std::sqrt(d));
-  }
-  return difference / scale;
-}
-
 /// One scene kind: its shipped case, overrides and history file.
 struct Case
 {

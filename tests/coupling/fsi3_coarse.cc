@@ -142,23 +142,7 @@ int main(int argc, char** argv)
 
   // (c) the force (drag, lift) and u(A) as vectors, each against its largest magnitude.
   bool equal = hn.size() == 20 && h1.size() == 20;
-  const auto difference = [&](const std::vector<unsigned int>& columns)
-  {
-    double scale = 0, difference = 0;
-    for (unsigned int i = 0; equal && i < hn.size(); ++i)
-    {
-      double norm = 0, d = 0;
-      for (const unsigned int c : columns)
-      {
-        norm += h1[i][c] * h1[i][c];
-        d += (hn[i][c] - h1[i][c]) * (hn[i][c] - h1[i][c]);
-      }
-      scale = std::max(scale, std::sqrt(norm));
-      difference = std::max(difference, std::sqrt(d));
-    }
-    return difference / std::max(scale, 1e-300);
-  };
-  const double force = difference({3, 4}), u_A = difference({5, 6});
+  const double force = vector_difference(hn, h1, {3, 4}), u_A = vector_difference(hn, h1, {5, 6});
   std::printf("np - 1 rank, max relative differences: force %.2e, u(A) %.2e\n", force, u_A);
   unsigned int iteration_difference = 0;
   for (unsigned int i = 0; equal && i < hn.size(); ++i)

@@ -300,10 +300,14 @@ void PressureColumn::make_interface()
 {
   const CouplingParameters& c = coupling;
   fluid_zone = std::make_unique<InterfaceZone<dim>>(
-    *fluid_fv, std::vector<unsigned int>{prm.mesh.patch_id(c.fluid_interface[0])}, "fluid side");
-  solid_zone = std::make_unique<InterfaceZone<dim>>(
-    *solid_fv, std::vector<unsigned int>{prm.solid_mesh.patch_id(c.solid_interface[0])},
-    "solid side");
+    *fluid_fv,
+    std::vector<unsigned int>{prm.mesh.patch_id(c.fluid_interface[0], "Coupling/Fluid interface")},
+    "fluid side");
+  solid_zone =
+    std::make_unique<InterfaceZone<dim>>(*solid_fv,
+                                         std::vector<unsigned int>{prm.solid_mesh.patch_id(
+                                           c.solid_interface[0], "Coupling/Solid interface")},
+                                         "solid side");
   traction_map = std::make_unique<FaceInterpolation<dim>>(*fluid_zone, *solid_zone);
   displacement_map = std::make_unique<VertexProjection<dim>>(*solid_zone, *fluid_zone);
   if (c.method == CouplingParameters::Method::iqn_ils)

@@ -16,4 +16,17 @@ namespace fvfsi
   template <int dim>
   void initialize_function(dealii::FunctionParser<dim>& f, const std::string& expression,
                            const std::string& parameter_name);
+
+  /// The largest magnitude a value given in a .prm file may have (SI units): beyond it the
+  /// solvers' products and squares would overflow to inf and NaN.
+  constexpr double max_input_value = 1e100;
+
+  /**
+   * Component `component` of `f` at `point`. A value that is not finite or beyond
+   * max_input_value is an input error: the std::runtime_error names `parameter_name`, the value,
+   * the point and the time.
+   */
+  template <int dim>
+  double checked_value(const dealii::FunctionParser<dim>& f, const dealii::Point<dim>& point,
+                       unsigned int component, const std::string& parameter_name);
 } // namespace fvfsi

@@ -38,8 +38,8 @@ namespace fvfsi
     bool with_expressions;
   };
 
-  /// The (patch, type, expression) conditions that `entries` list; `Condition` is an aggregate of
-  /// those three members.
+  /// The (patch, type, expression, parameter) conditions that `entries` list; `Condition` is an
+  /// aggregate of those four members.
   template <typename Condition, typename Type>
   std::vector<Condition> parse_boundary_entries(const std::vector<BoundaryEntry<Type>>& entries)
   {
@@ -47,10 +47,10 @@ namespace fvfsi
     for (const auto& e : entries)
       if (e.with_expressions)
         for (const auto& [patch, expression] : parse_named_values(e.text, e.name))
-          conditions.push_back({patch, e.type, expression});
+          conditions.push_back({patch, e.type, expression, e.name});
       else
         for (const auto& patch : parse_names(e.text))
-          conditions.push_back({patch, e.type, ""});
+          conditions.push_back({patch, e.type, "", e.name});
     return conditions;
   }
 } // namespace fvfsi

@@ -47,6 +47,11 @@ namespace fvfsi
     double end_time = 1;     ///< [s]
     /// Times a failed time step is tried again with half its dt (0: a failed step stops the run).
     unsigned int halvings = 0;
+    /// Stop after this many time steps, and a steady solve after this many iterations (pseudo
+    /// time steps, outer or coupling iterations), as if the run had converged (0: no limit).
+    /// From the command line (`fvfsi CASE.prm --steps N`), not from the .prm file: for trying a
+    /// case, and for tests that run every shipped case for a few steps.
+    unsigned int step_limit = 0;
     void declare(dealii::ParameterHandler& prm);
   };
 
@@ -60,7 +65,7 @@ namespace fvfsi
   {
   public:
     explicit TimeControl(const TimeParameters& parameters);
-    TimeControl(double time_step, double end_time);
+    TimeControl(double time_step, double end_time, unsigned int step_limit = 0);
 
     /// Move to the next time level: step + 1, t += dt. The solvers then solve for t.
     void advance();
@@ -73,10 +78,12 @@ namespace fvfsi
     double previous_time_step() const { return dt_old; } ///< t^n - t^(n-1) [s] (0: none)
     unsigned int step() const { return step_number; }    ///< 0 before the first advance()
     double end_time() const { return end; }
-    /// Steps from 0 to the end time with the initial dt.
+    /// Steps from 0 to the end time with the initial dt (at most the step limit).
     unsigned int n_steps() const;
-    /// True once t has reached the end time (to a millionth of a step).
-    bool at_end() const { return t >= end - 1e-6 * dt; }
+    /// True once t has reached the end time (to a millionth of a step), or the step limit.
+    bool at_end() const { return t >= end - 1e-6 * dt || step_limit_reached(step_number); }
+    /// True if iteration or step `k` is the last one the step limit (--steps) allows.
+    bool step_limit_reached(const unsigned int k) const { return limit > 0 && k >= limit; }
 
     /// Backward Euler on the first step, BDF2 (variable-step) after.
     BdfCoefficients bdf() const;
@@ -96,5 +103,6 @@ namespace fvfsi
   private:
     double t = 0, dt, dt_old = 0, next_dt, end;
     unsigned int step_number = 0;
+    unsigned int limit; // TimeParameters::step_limit; not saved in a checkpoint
   };
 } // namespace fvfsi

@@ -24,6 +24,7 @@ namespace fvfsi
     std::string patch;
     Type type = Type::wall;
     std::string expression;
+    std::string parameter; ///< the .prm entry that lists it, e.g. `Fluid/Wall`
   };
 
   struct FluidParameters

@@ -151,9 +151,8 @@ namespace fvfsi
     /// Force of the fluid on the body behind a wall patch, sum over its faces of
     /// S_f (p_f n_f - mu (n.grad u)_f) [N] (per unit depth in 2D), n_f out of the fluid.
     dealii::Tensor<1, dim> patch_force(unsigned int patch) const;
-    /// The sum of patch_force over the patches of `names` (their ids from `mesh`) [N].
-    dealii::Tensor<1, dim> patches_force(const std::vector<std::string>& names,
-                                         const MeshParameters& mesh) const;
+    /// The sum of patch_force over the patches `ids` [N].
+    dealii::Tensor<1, dim> patches_force(const std::vector<unsigned int>& ids) const;
     /// The force per unit area the fluid exerts on the wall at boundary face f,
     /// rho (p_f n_f - nu (n.grad u)_f) [Pa], n_f out of the fluid.
     dealii::Tensor<1, dim> wall_traction(unsigned int f) const;

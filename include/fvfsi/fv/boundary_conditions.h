@@ -69,20 +69,21 @@ namespace fvfsi
         if (!c.expression.empty())
         {
           functions.push_back(std::make_unique<dealii::FunctionParser<dim>>(n_components(c.type)));
-          initialize_function(*functions.back(), c.expression,
-                              solver + " boundary condition on " + c.patch);
+          names.push_back(c.parameter + " on patch `" + c.patch + "`");
+          initialize_function(*functions.back(), c.expression, names.back());
           entry.function = functions.size() - 1;
         }
-        by_patch[mesh.patch_id(c.patch)] = entry;
+        by_patch[mesh.patch_id(c.patch, c.parameter)] = entry;
       }
       for (unsigned int f = 0; f < geometry.faces.size(); ++f)
         if (geometry.faces[f].N == invalid_cell)
         {
           const auto it = by_patch.find(geometry.faces[f].patch);
           if (it == by_patch.end())
-            throw std::runtime_error(solver + ": patch `" +
-                                     mesh.patch_name(geometry.faces[f].patch) +
-                                     "` has no boundary condition (" + hint + ")");
+            throw std::runtime_error(
+              solver + ": patch `" + mesh.patch_name(geometry.faces[f].patch) +
+              "` has no boundary condition (" + hint + "; the patches are named by " +
+              mesh.section + "/Patch names)");
           face[f] = it->second;
         }
     }
@@ -96,6 +97,14 @@ namespace fvfsi
         throw std::logic_error("FaceConditions: a boundary condition without an expression");
       return *functions[face[f].function];
     }
+    /// Component `component` of boundary face f's expression at `point`; a value that is not
+    /// finite or too large (checked_value) stops the run with the .prm entry and patch named.
+    double value(const unsigned int f, const dealii::Point<dim>& point,
+                 const unsigned int component = 0) const
+    {
+      return checked_value(function(f), point, component, names[face[f].function]);
+    }
+
     /// Evaluate the expressions at time t [s] from now on.
     void set_time(const double t)
     {
@@ -111,5 +120,6 @@ namespace fvfsi
     };
     std::vector<Entry> face;
     std::vector<std::unique_ptr<dealii::FunctionParser<dim>>> functions;
+    std::vector<std::string> names; ///< per function: "Fluid/Velocity inlet on patch `inlet`"
   };
 } // namespace fvfsi

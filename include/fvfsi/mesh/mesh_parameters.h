@@ -5,6 +5,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace fvfsi
 {
@@ -34,7 +35,11 @@ namespace fvfsi
     void declare(dealii::ParameterHandler& prm, const std::string& section = "Mesh");
     /// Name of the patch with boundary id `id`.
     std::string patch_name(unsigned int id) const;
-    /// Boundary id of the patch called `name`; throws a message naming the patch if unknown.
-    unsigned int patch_id(const std::string& name) const;
+    /// Boundary id of the patch called `name`, which `parameter` (e.g. `Fluid/Wall`) names;
+    /// throws a message naming both if there is no such patch.
+    unsigned int patch_id(const std::string& name, const std::string& parameter) const;
+    /// The boundary ids of `names`, which `parameter` lists.
+    std::vector<unsigned int> patch_ids(const std::vector<std::string>& names,
+                                        const std::string& parameter) const;
   };
 } // namespace fvfsi

@@ -224,6 +224,20 @@ namespace fvfsi
     dealii::FunctionParser<dim> f(n_components);
     initialize_function(f, exact, parameter);
     f.set_time(clock.time());
+    // A non-finite or huge exact value is an input error; found on any rank, it stops all.
+    std::string bad_value;
+    const auto exact_value = [&](const unsigned int c, const unsigned int k)
+    {
+      try
+      {
+        return checked_value(f, fv->centroid[c], k, parameter);
+      }
+      catch (const std::exception& e)
+      {
+        bad_value = e.what();
+        return 0.0;
+      }
+    };
     double offset = 0;
     if (up_to_a_constant)
     {
@@ -231,7 +245,7 @@ namespace fvfsi
       for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
         for (unsigned int k = 0; k < n_components; ++k)
         {
-          offset += fv->cell_volume[c] * (value(c, k) - f.value(fv->centroid[c], k));
+          offset += fv->cell_volume[c] * (value(c, k) - exact_value(c, k));
           volume += fv->cell_volume[c];
         }
       offset =
@@ -241,10 +255,14 @@ namespace fvfsi
     for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
       for (unsigned int k = 0; k < n_components; ++k)
       {
-        const double error = value(c, k) - offset - f.value(fv->centroid[c], k);
+        const double error = value(c, k) - offset - exact_value(c, k);
         e.max = std::max(e.max, std::abs(error));
         e.l2 += fv->cell_volume[c] * error * error;
       }
+    const std::vector<std::string> bad = dealii::Utilities::MPI::all_gather(comm, bad_value);
+    for (const auto& message : bad)
+      if (!message.empty())
+        throw std::runtime_error(message);
     e.max = dealii::Utilities::MPI::max(e.max, comm);
     e.l2 = std::sqrt(dealii::Utilities::MPI::sum(e.l2, comm));
     return e;

@@ -27,6 +27,7 @@ namespace fvfsi
     std::string patch;
     Type type = Type::traction;
     std::string expression;
+    std::string parameter; ///< the .prm entry that lists it, e.g. `Fluid/Wall`
   };
 
   /// True for the boundary conditions that give a traction (Eq. 24) rather than a displacement.

@@ -139,6 +139,10 @@ namespace fvfsi
     /// One outer iteration: residual, component solves, accelerated update; returns the relative
     /// change max |du| / max |u|.
     double outer_iteration(unsigned int k);
+    /// Why the outer iterations may have diverged, for the message of a failed solve (collective):
+    /// a boundary displacement gradient on traction faces far beyond any real strain says that
+    /// the traction is too large for the boundary condition's iteration (Eq. 24). "" otherwise.
+    std::string divergence_hint() const;
     void update_gradients();
     void update_cell_gradients();
     dealii::Tensor<2, dim> tangential_part(unsigned int f) const;
