@@ -26,11 +26,23 @@ namespace fvfsi
       return x;
     }
 
+    /// Argument i of x as a count of cells: a whole number from 1 to 100 000 (a negative or
+    /// non-finite one would wrap around to billions of cells).
+    unsigned int count_of(const std::string& name, const std::vector<double>& x,
+                          const unsigned int i)
+    {
+      if (!(x[i] >= 1 && x[i] <= 100000 && x[i] == std::floor(x[i])))
+        throw std::runtime_error(name + ": argument " + std::to_string(i + 1) +
+                                 " is a number of cells, a whole number from 1 to 100000, not " +
+                                 Utilities::to_string(x[i]));
+      return static_cast<unsigned int>(x[i]);
+    }
+
     void quarter_plate_with_hole(const std::string& arguments, Triangulation<2>& tria)
     {
       const auto x = numbers_of("fvfsi_quarter_plate_with_hole", arguments, 3, 4);
       const double a = x[0], b = x[1], beta = x.size() > 3 ? x[3] : 2.0;
-      const unsigned int n = static_cast<unsigned int>(x[2]);
+      const unsigned int n = count_of("fvfsi_quarter_plate_with_hole", x, 2);
       if (!(a > 0 && b > a && n > 0))
         throw std::runtime_error("fvfsi_quarter_plate_with_hole: needs 0 < a < b and n > 0");
       const auto graded = [beta](const double xi)
@@ -70,7 +82,8 @@ namespace fvfsi
     void turek_hron_flag(const std::string& arguments, Triangulation<2>& tria)
     {
       const auto x = numbers_of("fvfsi_turek_hron_flag", arguments, 2, 2);
-      const unsigned int nx = static_cast<unsigned int>(x[0]), ny = static_cast<unsigned int>(x[1]);
+      const unsigned int nx = count_of("fvfsi_turek_hron_flag", x, 0),
+                         ny = count_of("fvfsi_turek_hron_flag", x, 1);
       GridGenerator::subdivided_hyper_rectangle(tria, {nx, ny}, Point<2>(0, 0), Point<2>(1, 1),
                                                 true);
       const double r = 0.05, x_end = 0.6, y0 = 0.19, h = 0.02;

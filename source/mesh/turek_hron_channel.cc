@@ -69,9 +69,9 @@ namespace fvfsi
     std::vector<double> x;
     for (const auto& s : Utilities::split_string_list(arguments, ':'))
       x.push_back(Utilities::string_to_double(s));
-    if (x.empty() || x.size() > 2 || x[0] < 4)
-      throw std::runtime_error("fvfsi_turek_hron_channel needs `n[: grading]` with n >= 4 (cells "
-                               "on a quarter of the cylinder), got `" +
+    if (x.empty() || x.size() > 2 || !(x[0] >= 4 && x[0] <= 2000))
+      throw std::runtime_error("fvfsi_turek_hron_channel needs `n[: grading]` with 4 <= n <= 2000 "
+                               "(cells on a quarter of the cylinder), got `" +
                                arguments + "`");
     const unsigned int n = static_cast<unsigned int>(x[0]);
     const double beta = x.size() > 1 ? x[1] : 1.5; // radial grading towards the cylinder

@@ -282,12 +282,15 @@ namespace
 int main(int argc, char** argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  // Arguments: `--all` (every kind on every line), a word (only the files whose name has it).
-  bool all = false;
+  // Arguments: `--all` (every kind on every line), `--verbose` (each run and its message on
+  // stdout), a word (only the files whose name has it).
+  bool all = false, verbose = false;
   std::string only;
   for (int i = 1; i < argc; ++i)
     if (std::string(argv[i]) == "--all")
       all = true;
+    else if (std::string(argv[i]) == "--verbose")
+      verbose = true;
     else
       only = argv[i];
   for (const int s : {SIGSEGV, SIGFPE, SIGABRT, SIGBUS, SIGILL, SIGALRM})
@@ -326,6 +329,8 @@ int main(int argc, char** argv)
       std::cout.rdbuf(cout_buffer);
 
       const std::string verdict = judge(m, code, error.str(), output, parameters);
+      if (verbose)
+        std::cout << description << "\n  exit " << code << " " << error.str() << std::endl;
       if (!verdict.empty())
       {
         ++failures;
