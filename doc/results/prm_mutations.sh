@@ -25,7 +25,7 @@ seconds=$(($(date +%s) - start))
   echo "# Mutated .prm files: every kind on every line"
   echo
   echo "\`doc/results/prm_mutations.sh\` on $(date -u +%Y-%m-%d), commit $(git -C "$repo" rev-parse --short HEAD),"
-  echo "$(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')), one rank:"
+  echo "$(nproc --all) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')), one rank:"
   echo "each mutated file run for two steps (\`--steps 2\`), in one process. Wall time ${seconds} s."
   echo
   echo "| file | mutations | ran normally | stopped, message names the parameter |"
