@@ -9,11 +9,13 @@
 #include <fvfsi/base/exceptions.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 namespace fvfsi
 {
@@ -78,6 +80,25 @@ namespace fvfsi
       for (unsigned int i = 0; i < pvd.size(); ++i)
         out << (i ? ", " : " ") << pvd[i];
       out << "\n";
+    }
+
+    /// True if every rank of `comm` calls this within `seconds` (a non-blocking barrier).
+    bool all_ranks_arrive(const MPI_Comm comm, const double seconds)
+    {
+      if (Utilities::MPI::n_mpi_processes(comm) == 1)
+        return true;
+      MPI_Request request;
+      MPI_Ibarrier(comm, &request);
+      Timer waited;
+      for (int done = 0;;)
+      {
+        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        if (done)
+          return true;
+        if (waited.wall_time() > seconds)
+          return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      }
     }
 
     const char* usage =
@@ -261,6 +282,17 @@ namespace fvfsi
     }
     catch (const std::exception& e)
     {
+      // The solvers' errors are collective: every rank gets here, and rank 0 says why. An error
+      // only some ranks found (an expression that is not finite on a patch only they have) would
+      // leave the others waiting in a collective call for ever: then this rank says why and
+      // stops the whole run.
+      if (!all_ranks_arrive(MPI_COMM_WORLD, 10.0))
+      {
+        std::cerr << "fvfsi: error on rank " << Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)
+                  << " (not on every rank; the run is aborted): " << concise_message(e)
+                  << std::endl;
+        MPI_Abort(MPI_COMM_WORLD, 1);
+      }
       if (root)
         err << "fvfsi: error: " << concise_message(e) << "\n";
       return 1;
