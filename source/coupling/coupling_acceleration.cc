@@ -81,6 +81,9 @@ namespace fvfsi
                       "IQN-IMVJ with an implicit J: the sliding window of time steps whose "
                       "columns make J (memory 4 x columns x N doubles).",
                       Patterns::Integer(1));
+    prm.add_parameter("Iteration log", iteration_log,
+                      "Print the relative interface residual of every coupling iteration (to see "
+                      "how a time step converges, or why it does not).");
     prm.leave_subsection();
   }
 

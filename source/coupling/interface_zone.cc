@@ -131,7 +131,7 @@ namespace fvfsi
     std::vector<Tensor<1, dim>>
     gather(const std::vector<std::pair<unsigned int, unsigned int>>& pairs,
            const std::vector<Tensor<1, dim>>& local_values, const unsigned int n,
-           const MPI_Comm comm)
+           const MPI_Comm comm, std::uint64_t& bytes_received)
     {
       std::vector<double> mine;
       for (const auto& [local, i] : pairs)
@@ -141,7 +141,11 @@ namespace fvfsi
       }
       std::vector<Tensor<1, dim>> field(n);
       std::vector<bool> set(n, false);
-      for (const auto& part : Utilities::MPI::all_gather(comm, mine))
+      const auto parts = Utilities::MPI::all_gather(comm, mine);
+      for (unsigned int rank = 0; rank < parts.size(); ++rank)
+        if (rank != Utilities::MPI::this_mpi_process(comm))
+          bytes_received += sizeof(double) * parts[rank].size();
+      for (const auto& part : parts)
         for (unsigned int k = 0; k < part.size(); k += dim + 1)
         {
           const unsigned int i = static_cast<unsigned int>(part[k]);
@@ -159,14 +163,14 @@ namespace fvfsi
   std::vector<Tensor<1, dim>>
   InterfaceZone<dim>::gather_face_field(const std::vector<Tensor<1, dim>>& local_values) const
   {
-    return gather(local_face_list, local_values, n_faces(), comm);
+    return gather(local_face_list, local_values, n_faces(), comm, bytes_received);
   }
 
   template <int dim>
   std::vector<Tensor<1, dim>>
   InterfaceZone<dim>::gather_point_field(const std::vector<Tensor<1, dim>>& local_values) const
   {
-    return gather(local_point_list, local_values, n_points(), comm);
+    return gather(local_point_list, local_values, n_points(), comm, bytes_received);
   }
 
   template class InterfaceZone<2>;

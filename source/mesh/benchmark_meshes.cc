@@ -4,6 +4,8 @@
 
 #include <fvfsi/mesh/benchmark_meshes.h>
 
+#include "generator_arguments.h"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -13,30 +15,7 @@ namespace fvfsi
 
   namespace
   {
-    std::vector<double> numbers_of(const std::string& name, const std::string& arguments,
-                                   const unsigned int min_count, const unsigned int max_count)
-    {
-      std::vector<double> x;
-      for (const auto& s : Utilities::split_string_list(arguments, ':'))
-        x.push_back(Utilities::string_to_double(s));
-      if (x.size() < min_count || x.size() > max_count)
-        throw std::runtime_error(name + " needs " + std::to_string(min_count) + " to " +
-                                 std::to_string(max_count) + " arguments separated by `:`, got `" +
-                                 arguments + "`");
-      return x;
-    }
-
-    /// Argument i of x as a count of cells: a whole number from 1 to 100 000 (a negative or
-    /// non-finite one would wrap around to billions of cells).
-    unsigned int count_of(const std::string& name, const std::vector<double>& x,
-                          const unsigned int i)
-    {
-      if (!(x[i] >= 1 && x[i] <= 100000 && x[i] == std::floor(x[i])))
-        throw std::runtime_error(name + ": argument " + std::to_string(i + 1) +
-                                 " is a number of cells, a whole number from 1 to 100000, not " +
-                                 Utilities::to_string(x[i]));
-      return static_cast<unsigned int>(x[i]);
-    }
+    using namespace internal;
 
     void quarter_plate_with_hole(const std::string& arguments, Triangulation<2>& tria)
     {
@@ -105,7 +84,7 @@ namespace fvfsi
   {
     return name == "fvfsi_quarter_plate_with_hole" || name == "fvfsi_turek_hron_flag" ||
            name == "fvfsi_turek_hron_channel" || name == "fvfsi_cavity_channel" ||
-           name == "fvfsi_cavity_plate";
+           name == "fvfsi_cavity_plate" || name == "fvfsi_tube_fluid" || name == "fvfsi_tube_wall";
   }
 
   template <int dim>
@@ -124,6 +103,13 @@ namespace fvfsi
         return make_cavity_channel(arguments, tria);
       if (name == "fvfsi_cavity_plate")
         return make_cavity_plate(arguments, tria);
+    }
+    if constexpr (dim == 3)
+    {
+      if (name == "fvfsi_tube_fluid")
+        return make_tube_fluid(arguments, tria);
+      if (name == "fvfsi_tube_wall")
+        return make_tube_wall(arguments, tria);
     }
     throw std::runtime_error("Mesh/Generator = " + name + " is not available in " +
                              std::to_string(dim) + "D");

@@ -144,23 +144,7 @@ namespace fvfsi
   template <int dim>
   std::pair<Tensor<1, dim>, double> FluidScene<dim>::probe_values(const unsigned int i) const
   {
-    const Tensor<1, dim> u = probes.template evaluate<Tensor<1, dim>>(
-      i,
-      [this](const unsigned int c, const Tensor<1, dim>& dx)
-      {
-        Tensor<1, dim> value = fluid->velocity()[c];
-        for (unsigned int j = 0; j < dim; ++j)
-          value[j] += dx * fluid->velocity_gradient(j)[c];
-        return value;
-      });
-    const double p =
-      probes.template evaluate<double>(i,
-                                       [this](const unsigned int c, const Tensor<1, dim>& dx)
-                                       {
-                                         return fluid->kinematic_pressure().local_element(c) +
-                                                dx * fluid->kinematic_pressure_gradient()[c];
-                                       });
-    return {u, fluid_parameters.rho * p};
+    return fluid->probe_values(probes, i);
   }
 
   template <int dim>

@@ -23,7 +23,8 @@ namespace fvfsi
         pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0),
         timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times), clock(input.time),
         max_halvings(input.time.halvings), fluid_tria(comm), solid_tria(comm),
-        probes(input.solid_scene.probes, "Solid scene/Probes")
+        probes(input.solid_scene.probes, "Solid scene/Probes"),
+        fluid_probes(input.fluid_scene.probes, "Fluid scene/Probes")
   {
     // Transient fluid with a transient or quasi-static solid; or both steady (solve_steady()).
     if (steady && solid_parameters.transient)
@@ -37,6 +38,12 @@ namespace fvfsi
         "FSI: the fluid mesh must follow the interface: set Mesh motion/Type = "
         "Laplace and list the fluid interface patches in Mesh motion/Moving "
         "patches");
+    for (unsigned int i = 0; i < fluid_probes.size(); ++i)
+      for (unsigned int j = 0; j < probes.size(); ++j)
+        if (fluid_probes.name(i) == probes.name(j))
+          throw std::runtime_error("FSI: the probe name `" + probes.name(j) +
+                                   "` is in both Fluid scene/Probes and Solid scene/Probes: "
+                                   "name them apart (the history has one column per name)");
     if (prm.coupling.fluid_interface.empty() || prm.coupling.solid_interface.empty())
       throw std::runtime_error("FSI: name the interface patches (Coupling/Fluid interface and "
                                "Coupling/Solid interface)");
@@ -76,6 +83,7 @@ namespace fvfsi
     solid =
       std::make_unique<SolidSolver<dim>>(*solid_fv, solid_mesh_parameters, solid_parameters, clock);
     probes.locate(*solid_fv);
+    fluid_probes.locate(*fluid_fv);
   }
 
   template <int dim>
@@ -116,6 +124,13 @@ namespace fvfsi
     for (unsigned int i = 0; i < probes.size(); ++i)
       for (const auto& c : vector_columns<dim>("u", "_" + probes.name(i)))
         columns.push_back(c);
+    if (!steady) // fluid velocity U and pressure p at the fluid probes
+      for (unsigned int i = 0; i < fluid_probes.size(); ++i)
+      {
+        for (const auto& c : vector_columns<dim>("U", "_" + fluid_probes.name(i)))
+          columns.push_back(c);
+        columns.push_back("p_" + fluid_probes.name(i));
+      }
     columns.push_back("min_volume_ratio"); // min over the fluid cells of V_P / V_P(reference)
     if (!steady)
       columns.push_back("dt"); // the time step of the line (Time step control may halve it)
@@ -251,9 +266,11 @@ namespace fvfsi
     for (unsigned int k = 1; k <= prm.coupling.max_iterations; ++k)
     {
       InterfaceVector next;
+      double d_tilde_norm = 0;
       try
       {
         const InterfaceVector d_tilde = coupling_iteration(d); // 2a-2e
+        d_tilde_norm = d_tilde.l2_norm();
         TimerOutput::Scope scope(timer, "acceleration");
         next = acceleration->next(d, d_tilde); // 2f: Eqs 30-31, Aitken or IQN
       }
@@ -277,6 +294,10 @@ namespace fvfsi
                                  impulsive_start_hint);
       if (steady)
         record_steady_iteration(k, residual);
+      else if (prm.coupling.iteration_log)
+        pcout << "fvfsi: " << step_name() << ", coupling iteration " << k
+              << ": relative interface residual " << residual << ", |d| = " << d.l2_norm()
+              << " m, |d~| = " << d_tilde_norm << " m\n";
       if (acceleration->converged() || (steady && clock.step_limit_reached(k)))
         return k; // d is the accepted displacement: both solvers' states belong to it
       d = next;
@@ -353,9 +374,24 @@ namespace fvfsi
       const Tensor<1, dim> u = solid_probe(i);
       append(line, u);
     }
+    append_fluid_probes(line);
     line.push_back(volume_ratio);
     line.push_back(clock.time_step());
     history->write_line(line);
+  }
+
+  template <int dim>
+  void FsiScene<dim>::append_fluid_probes(std::vector<double>& line)
+  {
+    if (fluid_probes.size() == 0)
+      return;
+    fluid_probes.locate(*fluid_fv); // the cells holding the points move with the mesh
+    for (unsigned int i = 0; i < fluid_probes.size(); ++i)
+    {
+      const auto [velocity, pressure] = fluid->probe_values(fluid_probes, i);
+      append(line, velocity);
+      line.push_back(pressure);
+    }
   }
 
   template <int dim>
@@ -513,6 +549,13 @@ namespace fvfsi
     summary.set_result("min_cell_volume_ratio", result.min_volume_ratio);
     summary.set_result("solid_outer_iterations", result.solid_outer_iterations);
     summary.set_result("coupled_wall_seconds", result.coupled_wall_seconds);
+    // The global interface zones' traffic: the bytes every rank receives from the others in the
+    // two gathers of a coupling iteration, summed over the ranks (0 on one rank).
+    const double bytes = Utilities::MPI::sum(
+      double(fluid_zone->received_bytes() + solid_zone->received_bytes()), comm);
+    summary.set_result(
+      "interface_bytes_per_coupling_iteration",
+      result.total_coupling_iterations > 0 ? bytes / result.total_coupling_iterations : 0.0);
     if (!fluid_scene_parameters.force_patches.empty() && last_force)
     {
       summary.set_result("drag", (*last_force)[0]);
@@ -525,6 +568,13 @@ namespace fvfsi
       const Tensor<1, dim> u = solid_probe(i);
       summary.set_result("point_" + probes.name(i) + "_displacement",
                          std::vector<double>(&u[0], &u[0] + dim));
+    }
+    for (unsigned int i = 0; i < fluid_probes.size(); ++i) // located by the last record
+    {
+      const auto [velocity, pressure] = fluid->probe_values(fluid_probes, i);
+      summary.set_result("point_" + fluid_probes.name(i) + "_velocity",
+                         std::vector<double>(&velocity[0], &velocity[0] + dim));
+      summary.set_result("point_" + fluid_probes.name(i) + "_pressure", pressure);
     }
     for (const auto& [section, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
       summary.set_timing(section, seconds);

@@ -74,6 +74,7 @@ namespace fvfsi
     double qr_filter = 1e-2; ///< IQN-*: columns' relative orthogonal part kept above this
     unsigned int imvj_dense_limit = 2000; ///< IQN-IMVJ: dense J up to this many interface values
     unsigned int imvj_time_steps = 8;     ///< IQN-IMVJ, implicit J: the window of time steps
+    bool iteration_log = false;           ///< print the residual of every coupling iteration
 
     void declare(dealii::ParameterHandler& prm);
   };

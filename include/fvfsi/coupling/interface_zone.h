@@ -24,6 +24,7 @@
 #include <fvfsi/mesh/fv_geometry.h>
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <utility>
@@ -94,8 +95,14 @@ namespace fvfsi
     std::vector<dealii::Tensor<1, dim>>
     gather_point_field(const std::vector<dealii::Tensor<1, dim>>& local_values) const;
 
+    /// Bytes this rank has received from the other ranks in gather_face_field() and
+    /// gather_point_field() so far (the payload of the all-gathers: zone index and dim values per
+    /// entry, 8 bytes each): the communication of the global interface zone.
+    std::uint64_t received_bytes() const { return bytes_received; }
+
   private:
     MPI_Comm comm;
+    mutable std::uint64_t bytes_received = 0;
     std::vector<std::pair<unsigned int, unsigned int>> local_face_list, local_point_list;
     std::map<std::array<double, dim>, unsigned int> point_lookup;
   };

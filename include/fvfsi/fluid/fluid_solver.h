@@ -81,6 +81,7 @@
 #include <fvfsi/fv/gradients.h>
 #include <fvfsi/fv/laplacian.h>
 #include <fvfsi/fv/linear_solver.h>
+#include <fvfsi/fv/point_probes.h>
 #include <fvfsi/fv/vertex_interpolation.h>
 #include <fvfsi/io/checkpoint.h>
 #include <fvfsi/io/vtu_output.h>
@@ -89,6 +90,7 @@
 
 #include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace fvfsi
@@ -143,6 +145,11 @@ namespace fvfsi
     const CellGradient<dim>& kinematic_pressure_gradient() const { return grad_p; }
     /// grad u_j at the cell centres (vertex Gauss-Green, Eq. 37).
     const CellGradient<dim>& velocity_gradient(unsigned int j) const { return grad_u[j]; }
+    /// The velocity [m/s] and pressure [Pa] at probe i: the linear reconstructions
+    /// u_P + (x - r_P) . grad u and p_P + (x - r_P) . grad p in the cell holding the point
+    /// (collective).
+    std::pair<dealii::Tensor<1, dim>, double> probe_values(const PointProbes<dim>& probes,
+                                                           unsigned int i) const;
     /// Volumetric face fluxes F_f = S_f . u_f [m^3/s] (per unit depth in 2D), indexed like
     /// FVGeometry::faces.
     const FaceVector& face_flux() const { return F; }
@@ -268,10 +275,14 @@ namespace fvfsi
     /// steps stop making progress; the steady solution does not depend on it).
     double relaxation = 1;
     double last_change = 0; ///< relative_change()
-    // The state a time step starts from (after extrapolation), for repeated solves of the step.
+    // The state a time step starts from (after extrapolation), for repeated solves of the step:
+    // the fields and the gradients the boundary values are extrapolated with (u_b at outlets,
+    // p_b at walls), so that every solve of the step starts from the same boundary values too.
     CellVectorField<dim> u_start;
     CellVector p_start;
     FaceVector F_start;
+    std::array<CellGradient<dim>, dim> grad_u_start;
+    CellGradient<dim> grad_p_start;
     unsigned int solves_this_step = 0;
 
     // Derived from u and p.

@@ -41,6 +41,20 @@ namespace fvfsi
    * fvfsi_cavity_plate  h   (the elastic cavity bottom of the same benchmark)
    *   The plate [2, 6] x [-1.4, -1] as (4/h) x max(2, round(0.4/h)) cells (same conditions on h).
    *   Boundary ids: 0 clamped (x = 2 and x = 6), 1 bottom (y = -1.4), 2 interface (top, y = -1).
+   *
+   * fvfsi_tube_fluid  R: L: n   (3D; paper section 4.4, the fluid in the elastic tube)
+   *   The cylinder of radius R about the x axis, x in [0, L]: deal.II's subdivided_cylinder (a
+   *   cross-section of 5 cells, a square and four around it) with n cells along the axis. The
+   *   hull carries a CylindricalManifold (id 0) and the cells a TransfiniteInterpolationManifold
+   *   (id 1), so Global refinements k give 5 4^k cells per cross-section, 4 2^k hull faces round
+   *   it and n 2^k cells along. Boundary ids: 0 wall (the hull), 1 inlet (x = 0), 2 outlet (x = L).
+   *
+   * fvfsi_tube_wall  R: t: L: n   (3D; the tube wall of the same benchmark)
+   *   The shell R <= r <= R + t about the x axis, x in [0, L]: deal.II's cylinder_shell with 4
+   *   cells round, one through the wall and n along, turned so that its inner vertices are those
+   *   of fvfsi_tube_fluid with the same R, L and n, refinement for refinement (a conforming
+   *   interface). CylindricalManifold about the x axis (id 0). Boundary ids: 0 inner surface
+   *   (r = R), 1 outer surface (r = R + t), 2 ends (x = 0 and x = L).
    */
   /// The Turek-Hron fluid domain (fvfsi_turek_hron_channel), in turek_hron_channel.cc.
   void make_turek_hron_channel(const std::string& arguments, dealii::Triangulation<2>& tria);
@@ -48,6 +62,11 @@ namespace fvfsi
   /// in cavity_meshes.cc.
   void make_cavity_channel(const std::string& arguments, dealii::Triangulation<2>& tria);
   void make_cavity_plate(const std::string& arguments, dealii::Triangulation<2>& tria);
+
+  /// The elastic tube benchmark's fluid (fvfsi_tube_fluid) and wall (fvfsi_tube_wall), in
+  /// tube_meshes.cc.
+  void make_tube_fluid(const std::string& arguments, dealii::Triangulation<3>& tria);
+  void make_tube_wall(const std::string& arguments, dealii::Triangulation<3>& tria);
 
   template <int dim>
   void make_benchmark_mesh(const std::string& name, const std::string& arguments,

@@ -108,6 +108,9 @@ namespace fvfsi
     /// Print the probes' displacements, the forces and the coupling iterations of the run.
     void print_result() const;
     const PointProbes<dim>& solid_probes() const { return probes; }
+    /// The probes of `Fluid scene/Probes` (velocity and pressure, found again on the moved mesh
+    /// at every record).
+    const PointProbes<dim>& fluid_probe_points() const { return fluid_probes; }
 
   private:
     /// The meshes (from the checkpoint when restarting), their geometry and the solvers.
@@ -148,6 +151,9 @@ namespace fvfsi
     /// Solid vertex displacements -> fluid interface vertices (zone numbering).
     InterfaceVector solid_interface_displacement() const;
     void record_time_history(unsigned int iterations, double residual);
+    /// Append the velocity and pressure at every fluid probe to `line`, the probes found on the
+    /// fluid mesh as it is now.
+    void append_fluid_probes(std::vector<double>& line);
     /// Steady: one line of fsi_steady_history.txt and a progress line per coupling iteration.
     void record_steady_iteration(unsigned int k, double residual);
     /// The fluid's force on the Fluid scene/Force patches [N] (per unit depth in 2D).
@@ -178,7 +184,8 @@ namespace fvfsi
     std::unique_ptr<FaceInterpolation<dim>> traction_map;
     std::unique_ptr<VertexProjection<dim>> displacement_map;
     std::unique_ptr<CouplingAcceleration> acceleration;
-    PointProbes<dim> probes;
+    PointProbes<dim> probes;       ///< Solid scene/Probes: displacement
+    PointProbes<dim> fluid_probes; ///< Fluid scene/Probes: velocity and pressure
     std::unique_ptr<VtuOutput<dim>> fluid_output, solid_output;
     std::unique_ptr<HistoryFile> history;
 

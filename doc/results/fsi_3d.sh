@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# The elastic tube (paper section 4.4) runs of doc/results/fsi_3d.md, one at a time on one rank
+# unless stated: prm/elastic_tube.prm as shipped (3 840 fluid + 3 072 wall cells, dt = 1e-4 s, to
+# 10 ms), the temporal study (dt = 5e-5, 2.5e-5 s on the shipped mesh), the finer mesh (Global
+# refinements 3 on both sides: 30 720 + 24 576 cells), and the parallel runs: the FSI case, the
+# fluid alone (Scene = fluid, the walls rigid) and the wall alone (Scene = solid, the inlet
+# pressure history on its inner surface) on 1 and 2 ranks, REPEATS each. Writes the markdown
+# tables to stdout, doc/results/fsi_3d_tube.png and the "tube" entry of doc/results/fsi_3d.json.
+# A completed run in RUN_DIRECTORY is not run again. Cost on one core: about 40 min.
+#   usage: doc/results/fsi_3d.sh [path/to/fvfsi [RUN_DIRECTORY [REPEATS]]]
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+python=${PYTHON:-/usr/bin/python3} # Debian's, with python3-numpy and python3-matplotlib
+fvfsi=${1:-build/fvfsi}
+runs=${2:-build/fsi_3d_runs}
+repeats=${3:-3}
+mkdir -p "$runs"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load: $(cut -d' ' -f1-3 /proc/loadavg); commit $(git rev-parse --short HEAD)"
+
+# run NAME NP [SET...]: prm/elastic_tube.prm on NP ranks with the --set overrides into $runs/NAME.
+run() {
+  local name=$1 np=$2 out=$runs/$1 args=()
+  shift 2
+  for s in "$@"; do args+=(--set "$s"); done
+  if [[ -f $out/summary.json ]] && grep -q '"completed"' "$out/summary.json"; then return; fi
+  echo "$(date -u +%H:%M) $name: running (log $out.log)"
+  mkdir -p "$out" && git rev-parse --short HEAD > "$out/commit.txt"
+  mpirun --oversubscribe -np "$np" "$fvfsi" prm/elastic_tube.prm "${args[@]}" \
+    --set "Fluid scene/Output interval=0" --set "Output directory=$out" > "$out.log" 2>&1
+}
+record() { # record NAME [SET...]
+  local name=$1
+  shift
+  "$python" doc/results/fsi_3d.py tube-record "$runs/$name" prm/elastic_tube.prm "$@" > "$runs/$name.json"
+}
+
+run shipped 1
+run dt5e-5 1 "Time/Time step=5e-5"
+run dt2.5e-5 1 "Time/Time step=2.5e-5"
+run refined 1 "Mesh/Global refinements=3" "Solid mesh/Global refinements=3"
+record shipped
+record dt5e-5 "Time/Time step=5e-5"
+record dt2.5e-5 "Time/Time step=2.5e-5"
+record refined "Mesh/Global refinements=3" "Solid mesh/Global refinements=3"
+
+# Parallel: 20 time steps (2 ms) of each; the fluid alone on rigid walls; the wall alone under
+# the inlet pressure history on its inner surface (the case's fluid pressure at the inlet).
+short=("Time/End time=0.002")
+fluid=("Scene=fluid" "Mesh motion/Type=none")
+solid=("Scene=solid" "Mesh/Generator=fvfsi_tube_wall" "Mesh/Generator arguments=0.005: 0.001: 0.05: 12"
+       "Mesh/Patch names=0: inner, 1: outer, 2: ends" "Solid/External traction="
+       "Solid/Pressure=inner: 1333.2*(t <= 0.003)" "Solid scene/Probes=A: 0.025, 0.005, 0")
+for r in $(seq 1 "$repeats"); do
+  for np in 1 2; do
+    run "fsi_np${np}_$r" "$np" "${short[@]}"
+    run "fluid_np${np}_$r" "$np" "${short[@]}" "${fluid[@]}"
+    run "solid_np${np}_$r" "$np" "${short[@]}" "${solid[@]}"
+  done
+done
+
+"$python" doc/results/fsi_3d.py tube-table "$runs"/{shipped,dt5e-5,dt2.5e-5,refined}.json
+echo
+echo "temporal order of the peak radial displacement (dt = 1e-4, 5e-5, 2.5e-5 s): $("$python" doc/results/fsi_3d.py tube-order "$runs"/{shipped,dt5e-5,dt2.5e-5}.json)"
+echo
+"$python" doc/results/fsi_3d.py tube-parallel "$runs" "$repeats"
+"$python" doc/results/fsi_3d.py tube-plot doc/results/fsi_3d_tube.png \
+  "$runs/shipped" "3 840 + 3 072 cells, dt = 1e-4 s" "$runs/dt2.5e-5" "dt = 2.5e-5 s" \
+  "$runs/refined" "30 720 + 24 576 cells, dt = 1e-4 s"
+"$python" doc/results/fsi_3d.py tube-store "$runs/shipped.json" --order "$runs"/{shipped,dt5e-5,dt2.5e-5}.json \
+  --runs "$runs/refined.json" --parallel "$runs" "$repeats"
