@@ -28,7 +28,7 @@ print(f"{d:.7e} | {abs(d - exact) / exact * 100:.4f}% | {r['coupling_iterations'
 PY
 )
     else
-      line="diverged: $(grep -o 'at time step [0-9]*' "$dir/log" | head -1) | - | - | -"
+      line="diverged: $(grep -o 'error: FSI: at time step [0-9]*' "$dir/log" | head -1 | sed 's/error: FSI: //') | - | - | -"
       walls+=(0)
     fi
     rm -rf "$dir"
