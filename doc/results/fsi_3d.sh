@@ -7,8 +7,9 @@
 # (Scene = fluid, the walls rigid) and the wall alone (Scene = solid, the inlet pressure history
 # on its inner surface) on 1 and 2 ranks, REPEATS each. Writes the markdown
 # tables to stdout, doc/results/fsi_3d_tube.png and the "tube" entry of doc/results/fsi_3d.json.
-# A completed run in RUN_DIRECTORY is not run again. Cost on one core: about 30 min; the parallel
-# runs need two free cores (STAGE=serial runs the rest only, e.g. beside another job).
+# A completed run in RUN_DIRECTORY is not run again. Cost: about 20 min (measured: 66, 57, 116
+# and 735 s for the four runs on one core, 137 s for the parallel ones); the parallel runs need
+# two free cores (STAGE=serial runs the rest only, e.g. beside another job).
 #   usage: [STAGE=serial] doc/results/fsi_3d.sh [path/to/fvfsi [RUN_DIRECTORY [REPEATS]]]
 set -euo pipefail
 cd "$(dirname "$0")/../.."

@@ -108,9 +108,6 @@ namespace fvfsi
     /// Print the probes' displacements, the forces and the coupling iterations of the run.
     void print_result() const;
     const PointProbes<dim>& solid_probes() const { return probes; }
-    /// The probes of `Fluid scene/Probes` (velocity and pressure, found again on the moved mesh
-    /// at every record).
-    const PointProbes<dim>& fluid_probe_points() const { return fluid_probes; }
 
   private:
     /// The meshes (from the checkpoint when restarting), their geometry and the solvers.
