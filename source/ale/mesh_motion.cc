@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -53,6 +54,11 @@ namespace fvfsi
                   "centre from the nearest moving-patch face (quadratic inverse distance), "
                   "1 / max(r_f, d_fn) (inverse distance: spreads the deformation more evenly "
                   "in narrow channels), or 1 (uniform).");
+    prm.add_parameter("Sliding patches", sliding_patches,
+                      "Laplace: comma-separated planar patches normal to x, y or z (a symmetry "
+                      "plane) whose vertices slide in their plane: zero normal displacement, zero "
+                      "normal gradient of the others. A vertex on a moving or fixed patch as well "
+                      "follows that patch.");
     prm.add_parameter("Non-orthogonal correctors", non_orthogonal_correctors,
                       "Laplace: deferred-correction solves of Eq. 19's non-orthogonal part per "
                       "motion.",
@@ -66,7 +72,7 @@ namespace fvfsi
                               const MeshParameters& mesh_parameters,
                               const MeshMotionParameters& parameters, const TimeControl& clock)
       : reference(reference), prm(parameters), clock(clock), operators(reference),
-        solver(parameters.solver), vertex_dofs(reference.triangulation())
+        vertex_dofs(reference.triangulation())
   {
     if (prm.type == MeshMotionParameters::Type::prescribed)
     {
@@ -76,12 +82,9 @@ namespace fvfsi
     else if (prm.type == MeshMotionParameters::Type::laplace)
     {
       setup_patches(mesh_parameters);
+      setup_sliding_patches(mesh_parameters);
       compute_diffusivity();
-      operators.laplacian.reinit_matrix(matrix);
-      CellVector unused = reference.make_cell_vector();
-      operators.laplacian.assemble(gamma, bc, matrix, unused);
-      matrix.compress(VectorOperation::add);
-      solver.initialize(matrix); // the matrix never changes: one AMG set-up for the whole run
+      setup_systems();
       for (unsigned int j = 0; j < dim; ++j)
       {
         d_cell[j] = reference.make_cell_vector();
@@ -129,19 +132,91 @@ namespace fvfsi
       patch.vertices.erase(std::unique(patch.vertices.begin(), patch.vertices.end()),
                            patch.vertices.end());
     }
-    // Every boundary is Dirichlet: the moving patches' displacement, zero elsewhere.
+    // Every boundary but the sliding patches is Dirichlet: the moving patches' displacement,
+    // zero elsewhere.
     boundary_vertex.assign(reference.vertices().size(), -1);
+    std::set<unsigned int> sliding;
+    for (const auto& name : parse_names(prm.sliding_patches))
+      sliding.insert(mesh_parameters.patch_id(name, "Mesh motion/Sliding patches"));
     for (const auto& face : reference.faces)
-      if (face.N == invalid_cell)
+      if (face.N == invalid_cell && sliding.count(face.patch) == 0)
       {
-        bc.patch_type[face.patch] = BoundaryType::dirichlet;
+        for (unsigned int j = 0; j < dim; ++j)
+          bc[j].patch_type[face.patch] = BoundaryType::dirichlet;
         bool is_moving = false;
         for (const auto& patch : moving)
           is_moving = is_moving || patch.id == face.patch;
         for (const unsigned int v : face.vertices)
           boundary_vertex[v] = std::max(boundary_vertex[v], is_moving ? 1 : 0);
       }
-    bc.value.assign(reference.faces.size(), 0.0);
+    for (unsigned int j = 0; j < dim; ++j)
+      bc[j].value.assign(reference.faces.size(), 0.0);
+    face_values.assign(reference.faces.size(), 0.0);
+  }
+
+  template <int dim>
+  void MeshMotion<dim>::setup_sliding_patches(const MeshParameters& mesh_parameters)
+  {
+    // Each sliding patch's normal axis: the area-weighted |n_k| summed over all ranks' faces
+    // must equal the patch's area for one k (a plane normal to x, y or z).
+    fixed_components.assign(reference.vertices().size(), 0);
+    for (const auto& name : parse_names(prm.sliding_patches))
+    {
+      const unsigned int id = mesh_parameters.patch_id(name, "Mesh motion/Sliding patches");
+      for (const auto& patch : moving)
+        if (patch.id == id)
+          throw std::runtime_error("Mesh motion: patch `" + name +
+                                   "` is both a Moving and a Sliding patch");
+      std::array<double, dim + 1> sums{}; // area |n_k| per k, then the area
+      for (const auto& face : reference.faces)
+        if (face.kind == FaceKind::boundary && face.patch == id)
+        {
+          for (unsigned int k = 0; k < dim; ++k)
+            sums[k] += face.area * std::abs(face.n[k]);
+          sums[dim] += face.area;
+        }
+      Utilities::MPI::sum(ArrayView<const double>(sums.data(), sums.size()), reference.comm(),
+                          ArrayView<double>(sums.data(), sums.size()));
+      const unsigned int axis = std::max_element(sums.begin(), sums.begin() + dim) - sums.begin();
+      if (!(sums[dim] > 0) || std::abs(sums[axis] - sums[dim]) > 1e-10 * sums[dim])
+        throw std::runtime_error("Mesh motion/Sliding patches: patch `" + name +
+                                 "` is not a plane normal to x, y or z (or has no faces)");
+      sliding_axis[id] = axis;
+      for (unsigned int j = 0; j < dim; ++j)
+        bc[j].patch_type[id] = j == axis ? BoundaryType::dirichlet : BoundaryType::neumann;
+      for (const auto& face : reference.faces)
+        if (face.N == invalid_cell && face.patch == id)
+          for (const unsigned int v : face.vertices)
+            fixed_components[v] |= 1u << axis;
+    }
+  }
+
+  template <int dim>
+  void MeshMotion<dim>::setup_systems()
+  {
+    // The matrices never change: one AMG set-up each for the whole run. Components whose
+    // boundary types agree share a matrix.
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      system_of[j] = j;
+      for (unsigned int i = 0; i < j; ++i)
+        if (bc[i].patch_type == bc[j].patch_type)
+        {
+          system_of[j] = system_of[i];
+          break;
+        }
+      if (system_of[j] != j)
+        continue;
+      auto matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
+      operators.laplacian.reinit_matrix(*matrix);
+      CellVector unused = reference.make_cell_vector();
+      operators.laplacian.assemble(gamma, bc[j], *matrix, unused);
+      matrix->compress(VectorOperation::add);
+      solvers.push_back(std::make_unique<LinearSolver>(prm.solver));
+      solvers.back()->initialize(*matrix);
+      matrices.push_back(std::move(matrix));
+      system_of[j] = matrices.size() - 1;
+    }
   }
 
   template <int dim>
@@ -223,7 +298,8 @@ namespace fvfsi
   void MeshMotion<dim>::solve_laplace()
   {
     // Per component: Dirichlet values on the boundary faces (the average of their vertices'),
-    // deferred non-orthogonal corrections, then the vertex values by least squares (App. B).
+    // zero normal gradient on the sliding patches' faces for the in-plane components, deferred
+    // non-orthogonal corrections, then the vertex values by least squares (App. B).
     linear_iterations = 0;
     std::vector<double> vertex_values(d_vertex.size());
     for (unsigned int j = 0; j < dim; ++j)
@@ -232,26 +308,41 @@ namespace fvfsi
       for (unsigned int f = 0; f < reference.faces.size(); ++f)
       {
         const auto& face = reference.faces[f];
-        if (face.N != invalid_cell)
-          continue;
+        if (face.N != invalid_cell || bc[j].type(face) == BoundaryType::neumann)
+          continue; // a zero normal gradient: bc[j].value stays 0
         double value = 0;
         for (const unsigned int v : face.vertices)
           value += d_vertex[v][j] / face.vertices.size();
-        bc.value[f] = value;
+        bc[j].value[f] = value;
+        face_values[f] = value;
         if (face.kind == FaceKind::boundary) // Eq. 23, as Laplacian::assemble adds it
           rhs_boundary.local_element(face.P) += gamma[f] * face.area / face.d_n * value;
       }
+      const auto neumann_face_values = [&]()
+      {
+        if (sliding_axis.empty())
+          return;
+        const FaceVector b = operators.laplacian.boundary_values(d_cell[j], grad_d[j], bc[j]);
+        for (unsigned int f = 0; f < reference.faces.size(); ++f)
+          if (reference.faces[f].N == invalid_cell &&
+              bc[j].type(reference.faces[f]) == BoundaryType::neumann)
+            face_values[f] = b[f];
+      };
       DeferredCorrection control;
       control.max_iterations = prm.non_orthogonal_correctors + 1;
       const auto result = solve_deferred_correction(
-        control, solver, matrix, rhs_boundary, d_cell[j],
-        [&](CellVector& rhs) { operators.laplacian.add_correction(gamma, bc, grad_d[j], rhs); },
-        [&]() { operators.gradient(d_cell[j], bc.value, vertex_values, grad_d[j]); },
+        control, *solvers[system_of[j]], *matrices[system_of[j]], rhs_boundary, d_cell[j],
+        [&](CellVector& rhs) { operators.laplacian.add_correction(gamma, bc[j], grad_d[j], rhs); },
+        [&]()
+        {
+          neumann_face_values();
+          operators.gradient(d_cell[j], face_values, vertex_values, grad_d[j]);
+        },
         "mesh motion, component " + std::to_string(j));
       linear_iterations += result.linear_iterations;
       for (const unsigned int v : operators.vertex_interpolation.vertices())
         if (boundary_vertex[v] < 0)
-          d_vertex[v][j] = vertex_values[v];
+          d_vertex[v][j] = (fixed_components[v] >> j) & 1u ? 0.0 : vertex_values[v];
     }
     exchange_vertex_displacements();
   }

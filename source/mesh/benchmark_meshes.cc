@@ -84,7 +84,8 @@ namespace fvfsi
   {
     return name == "fvfsi_quarter_plate_with_hole" || name == "fvfsi_turek_hron_flag" ||
            name == "fvfsi_turek_hron_channel" || name == "fvfsi_cavity_channel" ||
-           name == "fvfsi_cavity_plate" || name == "fvfsi_tube_fluid" || name == "fvfsi_tube_wall";
+           name == "fvfsi_cavity_plate" || name == "fvfsi_tube_fluid" || name == "fvfsi_tube_wall" ||
+           name == "fvfsi_thick_plate_channel" || name == "fvfsi_thick_plate";
   }
 
   template <int dim>
@@ -110,6 +111,10 @@ namespace fvfsi
         return make_tube_fluid(arguments, tria);
       if (name == "fvfsi_tube_wall")
         return make_tube_wall(arguments, tria);
+      if (name == "fvfsi_thick_plate_channel")
+        return make_thick_plate_channel(arguments, tria);
+      if (name == "fvfsi_thick_plate")
+        return make_thick_plate(arguments, tria);
     }
     throw std::runtime_error("Mesh/Generator = " + name + " is not available in " +
                              std::to_string(dim) + "D");

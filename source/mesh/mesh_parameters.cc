@@ -11,8 +11,10 @@ namespace fvfsi
     prm.add_parameter(
       "Generator", generator,
       "Name of a deal.II GridGenerator function (hyper_cube, subdivided_hyper_rectangle, "
-      "hyper_shell, plate_with_a_hole, channel_with_cylinder, ...), or `file` to read "
-      "`File name`.");
+      "hyper_shell, plate_with_a_hole, channel_with_cylinder, ...), one of fvfsi's benchmark "
+      "meshes (fvfsi_turek_hron_channel, fvfsi_cavity_channel, fvfsi_tube_fluid, "
+      "fvfsi_thick_plate_channel, ...: include/fvfsi/mesh/benchmark_meshes.h), or `file` to "
+      "read `File name`.");
     prm.add_parameter(
       "Generator arguments", generator_arguments,
       "Arguments of the GridGenerator function, separated by `:` (points as `x, y`), "

@@ -10,6 +10,11 @@
 //    the vertices of the moving patch move by exactly b (boundary vertices take the given value);
 //  - a patch displacement set from outside (MeshMotion::set_patch_displacement, used by the FSI
 //    coupling) gives the same vertex positions as the same displacement given by an expression;
+//  - a sliding patch (the bottom y = 0): the other patches move by an affine field with a zero
+//    normal component and a zero normal gradient there, d = (0.1 x + 0.02, 0.08 y[, 0.01 x -
+//    0.06 z]); the sliding vertices' in-plane motion comes from the solution, and every vertex
+//    must move by d (the same 1e-6 as the affine case); a patch both moving and sliding is an
+//    error naming it;
 //  - every rank computes the same vertex positions (mpirun=2 output equals the serial one: the
 //    printed sums over owned cells' vertices, each vertex converged to the solver's 1e-8
 //    reduction, agree to the 4 printed decimals; numdiff's default 1e-6 tolerance applies).
@@ -64,6 +69,45 @@ void run(std::ofstream& out)
       }
   check(out, format("%dD: affine boundary motion moves every vertex affinely", dim),
         error / Utilities::MPI::max(scale, MPI_COMM_WORLD), 1e-6);
+
+  // The bottom slides, the other patches move by d_slide.
+  const std::string d_slide =
+    dim == 2 ? "0.1*x + 0.02; 0.08*y" : "0.1*x + 0.02; 0.08*y; 0.01*x - 0.06*z";
+  p.moving_patches.clear();
+  for (const auto& [id, name] : mesh.patch_names)
+    if (name != "bottom")
+      p.moving_patches += (p.moving_patches.empty() ? "" : " | ") + name + ": " + d_slide;
+  p.sliding_patches = "bottom";
+  fvfsi::MeshMotion<dim> sliding(reference, mesh, p, clock);
+  const auto x_slide = sliding.vertex_positions();
+  FunctionParser<dim> exact_slide(dim);
+  fvfsi::initialize_function(exact_slide, d_slide, "test");
+  error = 0;
+  scale = 0;
+  for (unsigned int c = 0; c < reference.n_owned_cells(); ++c)
+    for (const unsigned int v : reference.cell_vertices(c))
+      for (unsigned int j = 0; j < dim; ++j)
+      {
+        const double d = exact_slide.value(reference.vertices()[v], j);
+        error = std::max(error, std::abs(x_slide[v][j] - reference.vertices()[v][j] - d));
+        scale = std::max(scale, std::abs(d));
+      }
+  check(out, format("%dD: a sliding patch with affine motion elsewhere moves every vertex affinely",
+                    dim),
+        error / Utilities::MPI::max(scale, MPI_COMM_WORLD), 1e-6);
+  p.sliding_patches = "bottom, right";
+  bool named = false;
+  try
+  {
+    fvfsi::MeshMotion<dim> both(reference, mesh, p, clock);
+  }
+  catch (const std::exception& e)
+  {
+    named = std::string(e.what()).find("`right` is both a Moving and a Sliding patch") !=
+            std::string::npos;
+  }
+  check(out, format("%dD: a patch both moving and sliding is an error naming it", dim), named);
+  p.sliding_patches.clear();
 
   // One patch translated rigidly, quadratic inverse distance diffusivity.
   p.diffusivity = fvfsi::MeshMotionParameters::Diffusivity::quadratic_inverse_distance;

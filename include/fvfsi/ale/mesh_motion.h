@@ -16,7 +16,10 @@
 //    matrix never changes and its AMG preconditioner is built once. The cell displacements are
 //    carried to the vertices by the least-squares reconstruction of Appendix B; boundary vertices
 //    take their prescribed displacement exactly (a vertex shared by a moving and a fixed patch
-//    follows the moving one).
+//    follows the moving one). `Sliding patches` (planes normal to x, y or z, such as a symmetry
+//    plane) let their vertices slide in the plane: the normal component is zero there, the
+//    others have a zero normal gradient, so the cells next to a moving patch that meets the plane
+//    are not squeezed against fixed vertices.
 //
 // The class knows nothing about the fluid: it returns vertex positions at the time of the scene's
 // clock, which a driver passes to FVGeometry::swept_volumes, FVGeometry::reinit and
@@ -41,6 +44,7 @@
 #include <fvfsi/mesh/mesh_parameters.h>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -67,6 +71,8 @@ namespace fvfsi
     std::string displacement = "";
     /// Laplace: `patch: expressions | patch: expressions`, the displacement of moving patches.
     std::string moving_patches = "";
+    /// Laplace: comma-separated planar patches (normal to x, y or z) whose vertices slide.
+    std::string sliding_patches = "";
     Diffusivity diffusivity = Diffusivity::inverse_distance;
     unsigned int non_orthogonal_correctors = 2;
     LinearSolverParameters solver;
@@ -114,6 +120,8 @@ namespace fvfsi
 
   private:
     void setup_patches(const MeshParameters& mesh_parameters);
+    void setup_sliding_patches(const MeshParameters& mesh_parameters);
+    void setup_systems();
     void compute_diffusivity();
     void boundary_vertex_displacements(double t);
     void solve_laplace();
@@ -135,11 +143,19 @@ namespace fvfsi
     std::vector<MovingPatch> moving;
     MovingPatch& moving_patch(const std::string& name);
     FVOperators<dim> operators; ///< on the reference mesh
-    LinearSolver solver;
-    dealii::TrilinosWrappers::SparseMatrix matrix;
+    // One matrix and AMG preconditioner per distinct set of boundary types: components normal to
+    // no sliding patch share the all-Dirichlet one.
+    std::vector<std::unique_ptr<dealii::TrilinosWrappers::SparseMatrix>> matrices;
+    std::vector<std::unique_ptr<LinearSolver>> solvers;
+    std::array<unsigned int, dim> system_of; ///< component -> index into matrices, solvers
     CellVector rhs_boundary; ///< the Dirichlet sources of the assembled matrix, per unit value
     FaceVector gamma;
-    ScalarBoundaryConditions<dim> bc;
+    std::array<ScalarBoundaryConditions<dim>, dim> bc; ///< per component
+    FaceVector face_values; ///< boundary face values of the component being solved
+    /// Per sliding patch id: the axis of its normal.
+    std::map<unsigned int, unsigned int> sliding_axis;
+    /// Per vertex: bit j set if component j is held at zero by a sliding patch.
+    std::vector<unsigned int> fixed_components;
     std::array<CellVector, dim> d_cell; ///< cell displacements (last solve)
     std::array<CellGradient<dim>, dim> grad_d;
     std::vector<dealii::Tensor<1, dim>> d_vertex; ///< vertex displacements

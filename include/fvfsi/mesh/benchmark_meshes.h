@@ -12,9 +12,8 @@ namespace fvfsi
   bool is_benchmark_mesh(const std::string& name);
 
   /**
-   * Fill `tria` with the benchmark mesh `name` ("fvfsi_quarter_plate_with_hole",
-   * "fvfsi_turek_hron_flag", "fvfsi_cavity_channel" or "fvfsi_cavity_plate"), `arguments`
-   * separated by `:`.
+   * Fill `tria` with the benchmark mesh `name` (one of those below), `arguments` separated by
+   * `:`.
    *
    * fvfsi_quarter_plate_with_hole  a: b: n[: beta]   (paper section 4.1)
    *   The quarter plate [0,b]^2 without the disc of radius a about the origin, as two blocks of
@@ -55,6 +54,18 @@ namespace fvfsi
    *   of fvfsi_tube_fluid with the same R, L and n, refinement for refinement (a conforming
    *   interface). CylindricalManifold about the x axis (id 0). Boundary ids: 0 inner surface
    *   (r = R), 1 outer surface (r = R + t), 2 ends (x = 0 and x = L).
+   *
+   * fvfsi_thick_plate_channel  h[: g]   (3D; paper section 4.5, Richter's thick plate, half model)
+   *   The channel [0, 1.5] x [0, 0.4] x [-0.4, 0] without the plate [0.45, 0.55] x [0, 0.2] x
+   *   [-0.2, 0]: hexahedra of size h in y and z and over the plate in x, growing by the factor g
+   *   (1.15 by default, from 1 to 2) per cell away from the plate in x, up to 4 h. 0.1 / h must be
+   *   a whole number. Boundary ids: 0 inlet (x = 0), 1 outlet (x = 1.5), 2 walls (y = 0, y = 0.4,
+   *   z = -0.4), 3 symmetry (z = 0), 4 interface (the plate's wet faces).
+   *
+   * fvfsi_thick_plate  h   (3D; the plate of the same benchmark)
+   *   The plate as (0.1 / h) x (0.2 / h) x (0.2 / h) cubes of size h, vertex for vertex with
+   *   fvfsi_thick_plate_channel's interface for the same h. Boundary ids: 0 clamped (y = 0),
+   *   1 symmetry (z = 0), 2 interface (x = 0.45, x = 0.55, y = 0.2, z = -0.2).
    */
   /// The Turek-Hron fluid domain (fvfsi_turek_hron_channel), in turek_hron_channel.cc.
   void make_turek_hron_channel(const std::string& arguments, dealii::Triangulation<2>& tria);
@@ -67,6 +78,11 @@ namespace fvfsi
   /// tube_meshes.cc.
   void make_tube_fluid(const std::string& arguments, dealii::Triangulation<3>& tria);
   void make_tube_wall(const std::string& arguments, dealii::Triangulation<3>& tria);
+
+  /// The thick plate benchmark's channel (fvfsi_thick_plate_channel) and plate
+  /// (fvfsi_thick_plate), in thick_plate_meshes.cc.
+  void make_thick_plate_channel(const std::string& arguments, dealii::Triangulation<3>& tria);
+  void make_thick_plate(const std::string& arguments, dealii::Triangulation<3>& tria);
 
   template <int dim>
   void make_benchmark_mesh(const std::string& name, const std::string& arguments,
