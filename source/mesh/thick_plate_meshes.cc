@@ -51,9 +51,10 @@ namespace fvfsi
     {
       const double h = length_of(name, x, 0), n = 0.1 / h;
       if (!(n >= 1 - 1e-9 && n <= 100 && std::abs(n - std::round(n)) < 1e-9 * n))
-        throw std::runtime_error(name + ": the cell size h must divide the plate's thickness "
-                                        "0.1 m a whole number of times (e.g. 0.05, 0.025, "
-                                        "0.0125), not " +
+        throw std::runtime_error(name +
+                                 ": the cell size h must divide the plate's thickness "
+                                 "0.1 m a whole number of times (e.g. 0.05, 0.025, "
+                                 "0.0125), not " +
                                  Utilities::to_string(x[0]));
       return h;
     }
@@ -86,8 +87,9 @@ namespace fvfsi
     auto x = numbers_of(name, arguments, 1, 2);
     const double h = plate_cell_size(name, x), g = x.size() > 1 ? x[1] : 1.15;
     if (!(g >= 1 && g <= 2))
-      throw std::runtime_error(name + ": argument 2 is the growth factor of the cells away from "
-                                      "the plate, from 1 to 2, not " +
+      throw std::runtime_error(name +
+                               ": argument 2 is the growth factor of the cells away from "
+                               "the plate, from 1 to 2, not " +
                                Utilities::to_string(g));
 
     std::vector<std::vector<double>> steps(3);
@@ -133,8 +135,7 @@ namespace fvfsi
     const auto x = numbers_of(name, arguments, 1, 1);
     const double h = plate_cell_size(name, x);
     GridGenerator::subdivided_hyper_rectangle(
-      tria,
-      {cells_of(plate_x1 - plate_x0, h), cells_of(plate_height, h), cells_of(plate_depth, h)},
+      tria, {cells_of(plate_x1 - plate_x0, h), cells_of(plate_height, h), cells_of(plate_depth, h)},
       Point<3>(plate_x0, 0, -plate_depth), Point<3>(plate_x1, plate_height, 0), true);
     // colorize: 0 x = 0.45, 1 x = 0.55, 2 y = 0, 3 y = 0.2, 4 z = -0.2, 5 z = 0
     // -> 0 clamped (y = 0), 1 symmetry (z = 0), 2 interface (the wet faces).

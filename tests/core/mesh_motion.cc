@@ -92,9 +92,10 @@ void run(std::ofstream& out)
         error = std::max(error, std::abs(x_slide[v][j] - reference.vertices()[v][j] - d));
         scale = std::max(scale, std::abs(d));
       }
-  check(out, format("%dD: a sliding patch with affine motion elsewhere moves every vertex affinely",
-                    dim),
-        error / Utilities::MPI::max(scale, MPI_COMM_WORLD), 1e-6);
+  check(
+    out,
+    format("%dD: a sliding patch with affine motion elsewhere moves every vertex affinely", dim),
+    error / Utilities::MPI::max(scale, MPI_COMM_WORLD), 1e-6);
   p.sliding_patches = "bottom, right";
   bool named = false;
   try

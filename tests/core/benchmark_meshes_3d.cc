@@ -1,4 +1,4 @@
-// The meshes of the elastic tube benchmark (paper section 4.4), fvfsi_tube_fluid (the fluid
+// fvfsi's 3D benchmark meshes. The meshes of the elastic tube benchmark (paper section 4.4), fvfsi_tube_fluid (the fluid
 // cylinder) and fvfsi_tube_wall (the tube wall), R = 5 mm, t = 1 mm, L = 50 mm, n = 12 cells along
 // the axis on the coarse mesh, built by fvfsi::make_mesh into a
 // parallel::distributed::Triangulation<3> with 0, 1 and 2 global refinements (serial and
@@ -14,6 +14,18 @@
 //    inner surface have the same faces and vertices (the interface is conforming on every level);
 //  - bad arguments are rejected with a message naming the generator.
 // The cells' shape: the largest aspect ratio (longest / shortest edge) is printed.
+//
+// The meshes of the thick plate benchmark (paper section 4.5), fvfsi_thick_plate_channel and
+// fvfsi_thick_plate, for h = 0.05 and 0.025 m (1e-12 relative as above):
+//  - the fluid volume 1.5 x 0.4 x 0.4 - 0.1 x 0.2 x 0.2 = 0.236 m^3 (the plate's cells removed);
+//    the plate's 0.004 m^3 in (0.1 / h) (0.2 / h)^2 cells;
+//  - fluid patch areas: inlet, outlet 0.16; walls 0.58 + 0.6 + 0.6; symmetry 0.58; interface
+//    0.12 (x = 0.45, 0.55: 0.04 each, y = 0.2 and z = -0.2: 0.02 each); plate: clamped and
+//    symmetry 0.02, interface 0.12;
+//  - a conforming interface for equal h (the same faces and vertices on both sides, to 1e-9 m:
+//    the channel's coordinates are sums of step sizes, the plate's products);
+//  - an h that does not divide 0.1 m, or a growth factor out of [1, 2], is rejected.
+// The fluid cell count is printed (the x grading sets it).
 
 #include <fvfsi/mesh/fv_geometry.h>
 
@@ -87,7 +99,7 @@ namespace
           }
       }
     m.volume = Utilities::MPI::sum(m.volume, MPI_COMM_WORLD);
-    for (unsigned int id = 0; id < 3; ++id)
+    for (unsigned int id = 0; id < 5; ++id)
     {
       m.area[id] = Utilities::MPI::sum(m.area[id], MPI_COMM_WORLD);
       m.faces[id] = Utilities::MPI::sum(m.faces[id], MPI_COMM_WORLD);
@@ -98,13 +110,14 @@ namespace
     return m;
   }
 
-  /// The distinct points of a list of x, y, z triples, rounded to 1e-12 R.
-  std::set<std::array<long long, 3>> distinct(const std::vector<double>& xyz)
+  /// The distinct points of a list of x, y, z triples, rounded to q [m] (1e-12 R for the tube).
+  std::set<std::array<long long, 3>> distinct(const std::vector<double>& xyz,
+                                              const double q = 1e-12 * R)
   {
     std::set<std::array<long long, 3>> points;
     for (unsigned int i = 0; i + 2 < xyz.size(); i += 3)
-      points.insert({std::llround(xyz[i] / (1e-12 * R)), std::llround(xyz[i + 1] / (1e-12 * R)),
-                     std::llround(xyz[i + 2] / (1e-12 * R))});
+      points.insert(
+        {std::llround(xyz[i] / q), std::llround(xyz[i + 1] / q), std::llround(xyz[i + 2] / q)});
     return points;
   }
 
@@ -145,9 +158,38 @@ namespace
         << format("%.2f", w.aspect_ratio) << std::endl;
   }
 
+  void check_thick_plate(std::ostream& out, const double h)
+  {
+    out << "--- thick plate, h = " << h << std::endl;
+    const Mesh f = measure("fvfsi_thick_plate_channel", format("%g", h), 0, 4),
+               s = measure("fvfsi_thick_plate", format("%g", h), 0, 2);
+    const unsigned int n = static_cast<unsigned int>(std::round(0.1 / h));
+    check(out, "  plate cells (0.1 / h) (0.2 / h)^2", s.cells == 4 * n * n * n);
+    check(out, "  volumes: fluid 0.236, plate 0.004",
+          std::max(relative(f.volume, 0.236), relative(s.volume, 0.004)), 1e-12);
+    check(out, "  fluid areas: inlet, outlet, walls, symmetry, interface",
+          std::max({relative(f.area.at(0), 0.16), relative(f.area.at(1), 0.16),
+                    relative(f.area.at(2), 1.78), relative(f.area.at(3), 0.58),
+                    relative(f.area.at(4), 0.12)}),
+          1e-12);
+    check(out, "  plate areas: clamped, symmetry, interface",
+          std::max({relative(s.area.at(0), 0.02), relative(s.area.at(1), 0.02),
+                    relative(s.area.at(2), 0.12)}),
+          1e-12);
+    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    check(out, "  conforming interface: the same faces and vertices on both sides",
+          !root || (f.faces.at(4) == s.faces.at(2) &&
+                    distinct(f.interface_vertices, 1e-9) == distinct(s.interface_vertices, 1e-9)));
+    out << "  fluid cells " << f.cells << ", largest aspect ratio "
+        << format("%.2f", f.aspect_ratio) << std::endl;
+  }
+
   void check_bad_arguments(std::ostream& out)
   {
     for (const auto& [generator, arguments] : std::vector<std::pair<std::string, std::string>>{
+           {"fvfsi_thick_plate_channel", "0.03"},
+           {"fvfsi_thick_plate_channel", "0.05: 3"},
+           {"fvfsi_thick_plate", "0.05: 1"},
            {"fvfsi_tube_fluid", "0.005: 0.05"},
            {"fvfsi_tube_fluid", "0.005: -1: 12"},
            {"fvfsi_tube_wall", "0.005: 0.001: 0.05: 0"},
@@ -175,5 +217,7 @@ int main(int argc, char** argv)
   std::ofstream out = open_output();
   for (unsigned int k = 0; k <= 2; ++k)
     check_level(out, k);
+  for (const double h : {0.05, 0.025})
+    check_thick_plate(out, h);
   check_bad_arguments(out);
 }
