@@ -86,7 +86,7 @@ def table(records):
               f"{r['uy_A']:.4e}{percent(r, 'uy_A', 'error_vs_paper')} | "
               f"{r['Fy']:.4f}{percent(r, 'Fy', 'error_vs_paper')} | "
               f"{r.get('coupling_iterations', '')} | {r.get('fluid_pseudo_steps', '')} | "
-              f"{r['wall_seconds']:.0f} |")
+              f"{r['wall_seconds']:.3g} |")
 
 
 def large_table(records):
