@@ -84,8 +84,9 @@ namespace fvfsi
   {
     return name == "fvfsi_quarter_plate_with_hole" || name == "fvfsi_turek_hron_flag" ||
            name == "fvfsi_turek_hron_channel" || name == "fvfsi_cavity_channel" ||
-           name == "fvfsi_cavity_plate" || name == "fvfsi_tube_fluid" || name == "fvfsi_tube_wall" ||
-           name == "fvfsi_thick_plate_channel" || name == "fvfsi_thick_plate";
+           name == "fvfsi_cavity_plate" || name == "fvfsi_tube_fluid" ||
+           name == "fvfsi_tube_wall" || name == "fvfsi_thick_plate_channel" ||
+           name == "fvfsi_thick_plate";
   }
 
   template <int dim>

@@ -58,7 +58,16 @@ int main(int argc, char** argv)
   if (!root)
     return 0;
 
-  enum Column { iterations = 0, drag = 4, lift = 5, ux = 6, uy = 7, uz = 8, volume = 9 };
+  enum Column
+  {
+    iterations = 0,
+    drag = 4,
+    lift = 5,
+    ux = 6,
+    uy = 7,
+    uz = 8,
+    volume = 9
+  };
   const auto r = result("out_shipped");
   if (!error.empty())
     std::printf("shipped settings: %s\n", error.c_str());
