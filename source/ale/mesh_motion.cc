@@ -198,14 +198,14 @@ namespace fvfsi
     // boundary types agree share a matrix.
     for (unsigned int j = 0; j < dim; ++j)
     {
-      system_of[j] = j;
-      for (unsigned int i = 0; i < j; ++i)
+      bool shared = false;
+      for (unsigned int i = 0; i < j && !shared; ++i)
         if (bc[i].patch_type == bc[j].patch_type)
         {
           system_of[j] = system_of[i];
-          break;
+          shared = true;
         }
-      if (system_of[j] != j)
+      if (shared)
         continue;
       auto matrix = std::make_unique<TrilinosWrappers::SparseMatrix>();
       operators.laplacian.reinit_matrix(*matrix);
