@@ -26,6 +26,7 @@
 #include <csignal>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <regex>
 #include <set>
 #include <unistd.h>
@@ -36,6 +37,14 @@ namespace fs = std::filesystem;
 namespace
 {
   constexpr unsigned int hang_seconds = 120;
+
+  /// Cases whose shipped meshes are too large for the sweep (the thick plate: 45 056 + 16 384
+  /// cells, and 8 million after a deleted `Solid mesh/Global refinements`, whose default is 3)
+  /// run on their coarsest meshes: these --set overrides, each left out when its own line is the
+  /// mutated one.
+  const std::map<std::string, std::vector<std::pair<std::string, std::string>>> coarse_meshes = {
+    {"thick_plate.prm",
+     {{"Mesh/Generator arguments", "0.05"}, {"Solid mesh/Generator arguments", "0.05"}}}};
 
   /// What the signal handlers print: the mutation being run.
   char current_mutation[1024] = "";
@@ -324,7 +333,13 @@ int main(int argc, char** argv)
       std::ostringstream log, error;
       std::streambuf* const cout_buffer = std::cout.rdbuf(log.rdbuf()); // progress lines
       alarm(hang_seconds);
-      const int code = fvfsi::run_application({name + ".prm", "--steps", "2"}, log, error);
+      std::vector<std::string> arguments = {name + ".prm", "--steps", "2"};
+      if (const auto it = coarse_meshes.find(files[f].filename().string());
+          it != coarse_meshes.end())
+        for (const auto& [key, value] : it->second)
+          if (m.target->path != key)
+            arguments.insert(arguments.end(), {"--set", key + "=" + value});
+      const int code = fvfsi::run_application(arguments, log, error);
       alarm(0);
       std::cout.rdbuf(cout_buffer);
 
