@@ -61,6 +61,15 @@ def wave_speed(h):
     return float(np.polyfit(ts, xs, 1)[0]), arrivals
 
 
+def commit_of(directory):
+    """The commit the run directory names in commit.txt, else this checkout's."""
+    path = directory + "/commit.txt"
+    if os.path.exists(path):
+        return open(path).read().strip()
+    return subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
+                          text=True).stdout.strip()
+
+
 def tube_record(directory, prm, overrides):
     h = load(directory)
     with open(directory + "/summary.json") as f:
@@ -68,13 +77,9 @@ def tube_record(directory, prm, overrides):
     r = s["results"]
     speed, arrivals = wave_speed(h)
     t_peak, u_peak = peak(h["t"], h["uy_A"])
-    commit_file = directory + "/commit.txt"
-    commit = open(commit_file).read().strip() if os.path.exists(commit_file) else \
-        subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
-                       text=True).stdout.strip()
     cells = r["fluid_cells"] + r["solid_cells"]
     return {
-        "prm": prm, "set": overrides, "commit": commit, "ranks": s.get("n_mpi_ranks", 1),
+        "prm": prm, "set": overrides, "commit": commit_of(directory), "ranks": s.get("n_mpi_ranks", 1),
         "fluid_cells": r["fluid_cells"], "solid_cells": r["solid_cells"],
         "dt": float(h["dt"][-1]), "end_time": float(h["t"][-1]),
         "wall_seconds": s.get("wall_seconds"), "timing": s.get("timing", {}),
@@ -167,16 +172,31 @@ def tube_parallel(runs, repeats):
     return result
 
 
-def tube_store(args):
-    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "fsi_3d.json")
-    data = json.load(open(path)) if os.path.exists(path) else {}
-    groups = {"--order": [], "--runs": [], "--parallel": []}
+def group_arguments(args, flags):
+    """{flag: [the arguments after it up to the next flag]} for each of flags."""
+    groups = {flag: [] for flag in flags}
     which = None
-    for a in args[1:]:
+    for a in args:
         if a in groups:
             which = a
+        elif which is None:
+            sys.exit(f"{a}: expected one of {', '.join(flags)} first")
         else:
             groups[which].append(a)
+    return groups
+
+
+def store_entry(key, value):
+    """Writes value as fsi_3d.json[key], beside this script, keeping the other entries."""
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "fsi_3d.json")
+    data = json.load(open(path)) if os.path.exists(path) else {}
+    data[key] = value
+    with open(path, "w") as f:
+        json.dump(data, f, indent=1)
+
+
+def tube_store(args):
+    groups = group_arguments(args[1:], ("--order", "--runs", "--parallel"))
     tube = {"shipped": json.load(open(args[0])),
             "runs": [json.load(open(f)) for f in groups["--runs"]]}
     if len(groups["--order"]) == 3:
@@ -191,9 +211,7 @@ def tube_store(args):
         import io
         with contextlib.redirect_stdout(io.StringIO()):
             tube["parallel"] = tube_parallel(groups["--parallel"][0], int(groups["--parallel"][1]))
-    data["tube"] = tube
-    with open(path, "w") as f:
-        json.dump(data, f, indent=1)
+    store_entry("tube", tube)
 
 
 if __name__ == "__main__":

@@ -23,20 +23,13 @@ meshes or time steps halved each time (phi_3 the finest), the paper's Eq. 34:
 import json
 import math
 import os
-import subprocess
 import sys
+
+from fsi_3d import commit_of, group_arguments, store_entry  # the tube's script, beside this one
 
 REFERENCE = {"ux_A": 5.95e-5, "Fx": 1.33}          # Richter's benchmark
 PAPER = {"ux_A": 5.93e-5, "uy_A": 2.40e-5, "Fx": 1.31, "Fy": 0.1055}
 PAPER_LARGE = [0.01463, 0.005, -0.000447]        # the paper's Fig. 28, m
-
-
-def commit_of(directory):
-    path = directory + "/commit.txt"
-    if os.path.exists(path):
-        return open(path).read().strip()
-    return subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
-                          text=True).stdout.strip()
 
 
 def record(directory, prm, overrides):
@@ -144,15 +137,7 @@ def history_orders(runs):
 
 
 def store(args):
-    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "fsi_3d.json")
-    data = json.load(open(path)) if os.path.exists(path) else {}
-    groups = {"--runs": [], "--large": [], "--temporal": []}
-    which = None
-    for a in args[1:]:
-        if a in groups:
-            which = a
-        else:
-            groups[which].append(a)
+    groups = group_arguments(args[1:], ("--runs", "--large", "--temporal"))
     load = lambda files: [json.load(open(f)) for f in files]
     shipped = json.load(open(args[0]))
     plate = {"shipped": {k: shipped[k] for k in ("prm", "set", "commit", "fluid_cells",
@@ -180,9 +165,7 @@ def store(args):
         for run in temporal:
             run.pop("ux_A_history")
         plate["temporal_runs"] = temporal
-    data["plate"] = plate
-    with open(path, "w") as f:
-        json.dump(data, f, indent=1)
+    store_entry("plate", plate)
 
 
 if __name__ == "__main__":

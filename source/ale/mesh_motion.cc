@@ -322,11 +322,10 @@ namespace fvfsi
       {
         if (sliding_axis.empty())
           return;
-        const FaceVector b = operators.laplacian.boundary_values(d_cell[j], grad_d[j], bc[j]);
         for (unsigned int f = 0; f < reference.faces.size(); ++f)
           if (reference.faces[f].N == invalid_cell &&
               bc[j].type(reference.faces[f]) == BoundaryType::neumann)
-            face_values[f] = b[f];
+            face_values[f] = operators.laplacian.boundary_value(f, d_cell[j], grad_d[j], bc[j]);
       };
       DeferredCorrection control;
       control.max_iterations = prm.non_orthogonal_correctors + 1;

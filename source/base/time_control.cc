@@ -26,12 +26,19 @@ namespace fvfsi
                       "0: off, a failed step stops the run (after writing the last converged "
                       "state).",
                       dealii::Patterns::Integer(0, 20));
+    prm.add_parameter(
+      "Scheme", scheme,
+      "The time derivative (fluid, solid, mesh flux; the first step is always backward "
+      "Euler): BDF2, second order (paper Eqs 17-18), or backward Euler, first order and "
+      "strongly damping.",
+      dealii::Patterns::Selection("BDF2|backward Euler"));
     prm.leave_subsection();
   }
 
   TimeControl::TimeControl(const TimeParameters& parameters)
       : TimeControl(parameters.time_step, parameters.end_time, parameters.step_limit)
   {
+    euler_only = parameters.scheme == "backward Euler";
   }
 
   TimeControl::TimeControl(const double time_step, const double end_time,
@@ -75,7 +82,7 @@ namespace fvfsi
 
   BdfCoefficients TimeControl::bdf() const
   {
-    if (step_number <= 1)
+    if (step_number <= 1 || euler_only)
       return {1 / dt, 1 / dt, 0};
     const double omega = dt / dt_old;
     return {(1 + 2 * omega) / ((1 + omega) * dt), (1 + omega) / dt,

@@ -139,17 +139,23 @@ namespace fvfsi
   {
     FaceVector values(geometry.faces.size(), 0.0);
     for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.N != invalid_cell)
-        continue;
-      // Neumann: solve the Dirichlet form g = (phi_b - phi_P + explicit part) / d_fn for phi_b.
-      values[f] =
-        bc.type(face) == BoundaryType::dirichlet
-          ? bc.value[f]
-          : phi.local_element(face.P) + face.d_n * bc.value[f] - explicit_part(face, grad, hessian);
-    }
+      if (geometry.faces[f].N == invalid_cell)
+        values[f] = boundary_value(f, phi, grad, bc, hessian);
     return values;
+  }
+
+  template <int dim>
+  double Laplacian<dim>::boundary_value(const unsigned int f, const CellVector& phi,
+                                        const CellGradient<dim>& grad,
+                                        const ScalarBoundaryConditions<dim>& bc,
+                                        const CellHessian<dim>* hessian) const
+  {
+    const auto& face = geometry.faces[f];
+    Assert(face.N == invalid_cell, ExcMessage("boundary_value() of an interior face"));
+    // Neumann: solve the Dirichlet form g = (phi_b - phi_P + explicit part) / d_fn for phi_b.
+    return bc.type(face) == BoundaryType::dirichlet
+             ? bc.value[f]
+             : phi.local_element(face.P) + face.d_n * bc.value[f] - explicit_part(face, grad, hessian);
   }
 
   template class Laplacian<2>;

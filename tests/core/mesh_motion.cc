@@ -28,6 +28,27 @@
 
 using namespace fvfsi_core_test;
 
+// max |x_v - X_v - d(X_v)| / max |d(X_v)| over the vertices of the owned cells, d the expression
+// at t = 1 s.
+template <int dim>
+double relative_error(const fvfsi::FVGeometry<dim>& reference,
+                      const std::vector<Point<dim>>& x, const std::string& d_expression)
+{
+  FunctionParser<dim> exact(dim);
+  fvfsi::initialize_function(exact, d_expression, "test");
+  exact.set_time(1.0);
+  double error = 0, scale = 0;
+  for (unsigned int c = 0; c < reference.n_owned_cells(); ++c)
+    for (const unsigned int v : reference.cell_vertices(c))
+      for (unsigned int j = 0; j < dim; ++j)
+      {
+        const double d = exact.value(reference.vertices()[v], j);
+        error = std::max(error, std::abs(x[v][j] - reference.vertices()[v][j] - d));
+        scale = std::max(scale, std::abs(d));
+      }
+  return Utilities::MPI::max(error, MPI_COMM_WORLD) / Utilities::MPI::max(scale, MPI_COMM_WORLD);
+}
+
 template <int dim>
 void run(std::ofstream& out)
 {
@@ -54,21 +75,8 @@ void run(std::ofstream& out)
   for (const auto& [id, name] : mesh.patch_names)
     p.moving_patches += (p.moving_patches.empty() ? "" : " | ") + name + ": " + d_affine;
   fvfsi::MeshMotion<dim> affine(reference, mesh, p, clock);
-  const auto x = affine.vertex_positions();
-  FunctionParser<dim> exact(dim);
-  fvfsi::initialize_function(exact, d_affine, "test");
-  exact.set_time(1.0);
-  double error = 0, scale = 0;
-  for (unsigned int c = 0; c < reference.n_owned_cells(); ++c)
-    for (const unsigned int v : reference.cell_vertices(c))
-      for (unsigned int j = 0; j < dim; ++j)
-      {
-        const double d = exact.value(reference.vertices()[v], j);
-        error = std::max(error, std::abs(x[v][j] - reference.vertices()[v][j] - d));
-        scale = std::max(scale, std::abs(d));
-      }
   check(out, format("%dD: affine boundary motion moves every vertex affinely", dim),
-        error / Utilities::MPI::max(scale, MPI_COMM_WORLD), 1e-6);
+        relative_error(reference, affine.vertex_positions(), d_affine), 1e-6);
 
   // The bottom slides, the other patches move by d_slide.
   const std::string d_slide =
@@ -79,23 +87,10 @@ void run(std::ofstream& out)
       p.moving_patches += (p.moving_patches.empty() ? "" : " | ") + name + ": " + d_slide;
   p.sliding_patches = "bottom";
   fvfsi::MeshMotion<dim> sliding(reference, mesh, p, clock);
-  const auto x_slide = sliding.vertex_positions();
-  FunctionParser<dim> exact_slide(dim);
-  fvfsi::initialize_function(exact_slide, d_slide, "test");
-  error = 0;
-  scale = 0;
-  for (unsigned int c = 0; c < reference.n_owned_cells(); ++c)
-    for (const unsigned int v : reference.cell_vertices(c))
-      for (unsigned int j = 0; j < dim; ++j)
-      {
-        const double d = exact_slide.value(reference.vertices()[v], j);
-        error = std::max(error, std::abs(x_slide[v][j] - reference.vertices()[v][j] - d));
-        scale = std::max(scale, std::abs(d));
-      }
   check(
     out,
     format("%dD: a sliding patch with affine motion elsewhere moves every vertex affinely", dim),
-    error / Utilities::MPI::max(scale, MPI_COMM_WORLD), 1e-6);
+    relative_error(reference, sliding.vertex_positions(), d_slide), 1e-6);
   p.sliding_patches = "bottom, right";
   bool named = false;
   try

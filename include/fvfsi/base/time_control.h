@@ -5,7 +5,8 @@
 //
 //   du/dt (t^(n+1)) ~ c0 u^(n+1) - c1 u^n + c2 u^(n-1)
 //
-// The first step is backward Euler (c0 = c1 = 1/dt, c2 = 0), every later one BDF2; with steps of
+// The first step is backward Euler (c0 = c1 = 1/dt, c2 = 0), every later one BDF2 (`Time/Scheme =
+// BDF2`, the paper's) or backward Euler again (`Time/Scheme = backward Euler`); with steps of
 // different size (dt = t^(n+1) - t^n, dt_o = t^n - t^(n-1), omega = dt / dt_o)
 //   c0 = (1 + 2 omega) / ((1 + omega) dt),  c1 = (1 + omega) / dt,  c2 = omega^2 / ((1 + omega) dt),
 // which for equal steps are 3/(2 dt), 2/dt, 1/(2 dt). Always c1 = c0 + c2 (a constant has zero
@@ -52,6 +53,8 @@ namespace fvfsi
     /// From the command line (`fvfsi CASE.prm --steps N`), not from the .prm file: for trying a
     /// case, and for tests that run every shipped case for a few steps.
     unsigned int step_limit = 0;
+    /// The time derivative after the first step: "BDF2" (second order) or "backward Euler".
+    std::string scheme = "BDF2";
     void declare(dealii::ParameterHandler& prm);
   };
 
@@ -85,8 +88,11 @@ namespace fvfsi
     /// True if iteration or step `k` is the last one the step limit (--steps) allows.
     bool step_limit_reached(const unsigned int k) const { return limit > 0 && k >= limit; }
 
-    /// Backward Euler on the first step, BDF2 (variable-step) after.
+    /// Backward Euler on the first step, BDF2 (variable-step) after, unless the scheme is
+    /// backward Euler throughout.
     BdfCoefficients bdf() const;
+    /// Backward Euler on every step (Time/Scheme = backward Euler).
+    void use_backward_euler(const bool on) { euler_only = on; }
 
     /// "time step N (t = T s)", for messages.
     std::string step_name() const;
@@ -103,6 +109,7 @@ namespace fvfsi
   private:
     double t = 0, dt, dt_old = 0, next_dt, end;
     unsigned int step_number = 0;
-    unsigned int limit; // TimeParameters::step_limit; not saved in a checkpoint
+    unsigned int limit;      // TimeParameters::step_limit; not saved in a checkpoint
+    bool euler_only = false; // TimeParameters::scheme; from the .prm file, not saved
   };
 } // namespace fvfsi

@@ -75,6 +75,12 @@ namespace fvfsi
                                const ScalarBoundaryConditions<dim>& bc,
                                const CellHessian<dim>* hessian = nullptr) const;
 
+    /// phi_b of boundary face f alone, as boundary_values() gives it (no face vector allocated:
+    /// for loops over a few faces).
+    double boundary_value(unsigned int f, const CellVector& phi, const CellGradient<dim>& grad,
+                          const ScalarBoundaryConditions<dim>& bc,
+                          const CellHessian<dim>* hessian = nullptr) const;
+
   private:
     /// d_fn times the explicit part of n_f . (grad phi)_f. Eq. 19: -(k_P.(grad phi)_P +
     /// k_N.(grad phi)_N) (boundary: -k_P.(grad phi)_P). Quadratic: on an interior face
