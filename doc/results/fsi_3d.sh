@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # The elastic tube (paper section 4.4) runs of doc/results/fsi_3d.md, one at a time on one rank
 # unless stated: prm/elastic_tube.prm as shipped (3 840 fluid + 3 072 wall cells, dt = 1e-4 s, to
-# 10 ms), the temporal study (dt = 2e-4, 5e-5 s on the shipped mesh; 2.5e-5 s with
-# Coupling/Relaxation = 0.01 is unstable, see fsi_3d.md), the finer mesh (Global refinements 3
-# on both sides: 30 720 + 24 576 cells), and the parallel runs: the FSI case, the fluid alone
+# 10 ms), dt = 2e-4 s, the temporal study (dt = 1e-4, 5e-5, 2.5e-5 s on the shipped mesh, all
+# with Coupling/Relaxation = 0.01, which dt = 2.5e-5 s needs), the finer mesh (Global
+# refinements 3 on both sides: 30 720 + 24 576 cells), and the parallel runs: the FSI case, the fluid alone
 # (Scene = fluid, the walls rigid) and the wall alone (Scene = solid, the inlet pressure history
 # on its inner surface) on 1 and 2 ranks, REPEATS each. Writes the markdown
 # tables to stdout, doc/results/fsi_3d_tube.png and the "tube" entry of doc/results/fsi_3d.json.
-# A completed run in RUN_DIRECTORY is not run again. Cost: about 20 min (measured: 66, 57, 116
-# and 735 s for the four runs on one core, 137 s for the parallel ones); the parallel runs need
+# A completed run in RUN_DIRECTORY is not run again. Cost: about 35 min (measured: 66, 57, 735 s
+# for the shipped, dt = 2e-4 s and refined runs, about 160, 260 and 510 s for the temporal study
+# with another run beside, 137 s for the parallel ones); the parallel runs need
 # two free cores (STAGE=serial runs the rest only, e.g. beside another job).
 #   usage: [STAGE=serial] doc/results/fsi_3d.sh [path/to/fvfsi [RUN_DIRECTORY [REPEATS]]]
 set -euo pipefail
@@ -38,16 +39,26 @@ record() { # record NAME [SET...]
   "$python" doc/results/fsi_3d.py tube-record "$runs/$name" prm/elastic_tube.prm "$@" > "$runs/$name.json"
 }
 
+order=("$runs/order_dt1e-4.json" "$runs/order_dt5e-5.json" "$runs/order_dt2.5e-5.json")
 run shipped 1
-run dt5e-5 1 "Time/Time step=5e-5"
 run dt2e-4 1 "Time/Time step=2e-4"
+for dt in 1e-4 5e-5 2.5e-5; do
+  run "order_dt$dt" 1 "Coupling/Relaxation=0.01" "Time/Time step=$dt"
+done
 run refined 1 "Mesh/Global refinements=3" "Solid mesh/Global refinements=3"
 record shipped
-record dt5e-5 "Time/Time step=5e-5"
 record dt2e-4 "Time/Time step=2e-4"
+for dt in 1e-4 5e-5 2.5e-5; do
+  record "order_dt$dt" "Coupling/Relaxation=0.01" "Time/Time step=$dt"
+done
 record refined "Mesh/Global refinements=3" "Solid mesh/Global refinements=3"
+table() {
+  "$python" doc/results/fsi_3d.py tube-table "$runs"/{dt2e-4,shipped,order_dt1e-4,order_dt5e-5,order_dt2.5e-5,refined}.json
+  echo
+  echo "temporal order of the peak radial displacement (dt = 1e-4, 5e-5, 2.5e-5 s): $("$python" doc/results/fsi_3d.py tube-order "${order[@]}")"
+}
 if [[ ${STAGE:-all} == serial ]]; then
-  "$python" doc/results/fsi_3d.py tube-table "$runs"/{dt2e-4,shipped,dt5e-5,refined}.json
+  table
   exit 0
 fi
 
@@ -66,13 +77,11 @@ for r in $(seq 1 "$repeats"); do
   done
 done
 
-"$python" doc/results/fsi_3d.py tube-table "$runs"/{dt2e-4,shipped,dt5e-5,refined}.json
-echo
-echo "temporal order of the peak radial displacement (dt = 2e-4, 1e-4, 5e-5 s): $("$python" doc/results/fsi_3d.py tube-order "$runs"/{dt2e-4,shipped,dt5e-5}.json)"
+table
 echo
 "$python" doc/results/fsi_3d.py tube-parallel "$runs" "$repeats"
 "$python" doc/results/fsi_3d.py tube-plot doc/results/fsi_3d_tube.png \
   "$runs/refined" "30 720 + 24 576 cells, dt = 1e-4 s" "$runs/shipped" "3 840 + 3 072 cells, dt = 1e-4 s" \
-  "$runs/dt5e-5" "3 840 + 3 072 cells, dt = 5e-5 s"
-"$python" doc/results/fsi_3d.py tube-store "$runs/shipped.json" --order "$runs"/{dt2e-4,shipped,dt5e-5}.json \
+  "$runs/order_dt2.5e-5" "3 840 + 3 072 cells, dt = 2.5e-5 s"
+"$python" doc/results/fsi_3d.py tube-store "$runs/shipped.json" --order "${order[@]}" \
   --runs "$runs/refined.json" --parallel "$runs" "$repeats"

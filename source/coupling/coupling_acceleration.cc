@@ -84,6 +84,14 @@ namespace fvfsi
     prm.add_parameter("Iteration log", iteration_log,
                       "Print the relative interface residual of every coupling iteration (to see "
                       "how a time step converges, or why it does not).");
+    prm.add_parameter(
+      "Face average displacement", face_average_displacement,
+      "false: the solid's interface vertex displacements are its vertex values, the "
+      "least-squares reconstruction from cell centres and boundary faces (App. B, the "
+      "paper's). true: each interface vertex takes the inverse-distance average of the "
+      "displacements of the interface faces round it, the displacement the fluid traction "
+      "acts on in the solid: no work is made at the interface, which keeps thin walls "
+      "with a heavy fluid stable at small time steps (doc/results/fsi_3d.md, the tube).");
     prm.leave_subsection();
   }
 

@@ -100,6 +100,20 @@ namespace fvfsi
       face_points.push_back(corners);
     }
 
+    // The rim of the interface surface, where it meets the rest of the boundary: in 2D the points
+    // of one face, in 3D the points of the edges of one face.
+    std::map<std::pair<unsigned int, unsigned int>, unsigned int> edge_faces;
+    for (const auto& corners : face_points)
+      for (unsigned int j = 0; j < (dim == 2 ? 2u : n_face_points); ++j)
+      {
+        const unsigned int a = corners[j], b = dim == 2 ? a : corners[(j + 1) % n_face_points];
+        ++edge_faces[std::minmax(a, b)];
+      }
+    on_rim.assign(points.size(), false);
+    for (const auto& [edge, count] : edge_faces)
+      if (count == 1)
+        on_rim[edge.first] = on_rim[edge.second] = true;
+
     // The way back to the local mesh.
     std::map<unsigned int, unsigned int> local_point;
     for (unsigned int f = 0; f < geometry.faces.size(); ++f)
@@ -171,6 +185,27 @@ namespace fvfsi
   InterfaceZone<dim>::gather_point_field(const std::vector<Tensor<1, dim>>& local_values) const
   {
     return gather(local_point_list, local_values, n_points(), comm, bytes_received);
+  }
+
+  template <int dim>
+  std::vector<Tensor<1, dim>>
+  InterfaceZone<dim>::face_to_point_average(const std::vector<Tensor<1, dim>>& face_values,
+                                            const std::vector<Tensor<1, dim>>& rim_values) const
+  {
+    AssertDimension(face_values.size(), n_faces());
+    AssertDimension(rim_values.size(), n_points());
+    std::vector<Tensor<1, dim>> sum(n_points());
+    std::vector<double> weight(n_points(), 0.0);
+    for (unsigned int f = 0; f < n_faces(); ++f)
+      for (const unsigned int i : face_points[f])
+      {
+        const double w = 1 / (points[i] - face_centre[f]).norm();
+        sum[i] += w * face_values[f];
+        weight[i] += w;
+      }
+    for (unsigned int i = 0; i < n_points(); ++i)
+      sum[i] = on_rim[i] ? rim_values[i] : sum[i] / weight[i]; // every point belongs to a face
+    return sum;
   }
 
   template class InterfaceZone<2>;

@@ -197,6 +197,17 @@ namespace fvfsi
   InterfaceVector FsiScene<dim>::solid_interface_displacement() const
   {
     TimerOutput::Scope scope(timer, "displacement transfer");
+    if (prm.coupling.face_average_displacement)
+    {
+      // The boundary-face displacements the fluid traction acts on, averaged to the vertices;
+      // on the rim of the interface (a clamped end) the vertex values.
+      std::vector<Tensor<1, dim>> face_displacement(solid_fv->faces.size());
+      for (const auto& [f, j] : solid_zone->local_faces())
+        face_displacement[f] = solid->boundary_displacement(f);
+      return displacement_map->interpolate(solid_zone->face_to_point_average(
+        solid_zone->gather_face_field(face_displacement),
+        solid_zone->gather_point_field(solid->vertex_displacements())));
+    }
     return displacement_map->interpolate(
       solid_zone->gather_point_field(solid->vertex_displacements()));
   }

@@ -75,6 +75,10 @@ namespace fvfsi
     unsigned int imvj_dense_limit = 2000; ///< IQN-IMVJ: dense J up to this many interface values
     unsigned int imvj_time_steps = 8;     ///< IQN-IMVJ, implicit J: the window of time steps
     bool iteration_log = false;           ///< print the residual of every coupling iteration
+    /// Where the solid's interface displacement handed to the fluid comes from: its vertex
+    /// values (the least-squares reconstruction of App. B, the paper's) or the average of the
+    /// boundary-face displacements round each interface vertex.
+    bool face_average_displacement = false;
 
     void declare(dealii::ParameterHandler& prm);
   };

@@ -68,6 +68,9 @@ namespace fvfsi
     std::vector<dealii::Point<dim>> face_centre;                      ///< r_f [m]
     std::vector<dealii::Tensor<1, dim>> face_normal; ///< unit normal out of the mesh
     std::vector<double> face_area;                   ///< S_f [m^(dim-1)]
+    /// Whether each point is on the rim of the interface surface, where it meets the rest of the
+    /// boundary (2D: the line's end points; 3D: the points of edges that only one face has).
+    std::vector<bool> on_rim;
 
     /// (local face index in FVGeometry::faces, zone face index) of this rank's owned faces.
     const std::vector<std::pair<unsigned int, unsigned int>>& local_faces() const
@@ -94,6 +97,14 @@ namespace fvfsi
     /// the value of the lowest rank. Collective.
     std::vector<dealii::Tensor<1, dim>>
     gather_point_field(const std::vector<dealii::Tensor<1, dim>>& local_values) const;
+
+    /// The point field whose value at each point is the average of `face_values` (a zone face
+    /// field) over the faces round the point, weighted by the inverse distance from the point to
+    /// each face centre (in 2D: the linear interpolation between the two faces); on the rim,
+    /// where a face average would reach past the interface, `rim_values` (a zone point field).
+    std::vector<dealii::Tensor<1, dim>>
+    face_to_point_average(const std::vector<dealii::Tensor<1, dim>>& face_values,
+                          const std::vector<dealii::Tensor<1, dim>>& rim_values) const;
 
     /// Bytes this rank has received from the other ranks in gather_face_field() and
     /// gather_point_field() so far (the payload of the all-gathers: zone index and dim values per
