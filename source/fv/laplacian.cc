@@ -155,7 +155,8 @@ namespace fvfsi
     // Neumann: solve the Dirichlet form g = (phi_b - phi_P + explicit part) / d_fn for phi_b.
     return bc.type(face) == BoundaryType::dirichlet
              ? bc.value[f]
-             : phi.local_element(face.P) + face.d_n * bc.value[f] - explicit_part(face, grad, hessian);
+             : phi.local_element(face.P) + face.d_n * bc.value[f] -
+                 explicit_part(face, grad, hessian);
   }
 
   template class Laplacian<2>;

@@ -31,8 +31,8 @@ using namespace fvfsi_core_test;
 // max |x_v - X_v - d(X_v)| / max |d(X_v)| over the vertices of the owned cells, d the expression
 // at t = 1 s.
 template <int dim>
-double relative_error(const fvfsi::FVGeometry<dim>& reference,
-                      const std::vector<Point<dim>>& x, const std::string& d_expression)
+double relative_error(const fvfsi::FVGeometry<dim>& reference, const std::vector<Point<dim>>& x,
+                      const std::string& d_expression)
 {
   FunctionParser<dim> exact(dim);
   fvfsi::initialize_function(exact, d_expression, "test");
