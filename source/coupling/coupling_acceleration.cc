@@ -89,9 +89,10 @@ namespace fvfsi
       "false: the solid's interface vertex displacements are its vertex values, the "
       "least-squares reconstruction from cell centres and boundary faces (App. B, the "
       "paper's). true: each interface vertex takes the inverse-distance average of the "
-      "displacements of the interface faces round it, the displacement the fluid traction "
-      "acts on in the solid: no work is made at the interface, which keeps thin walls "
-      "with a heavy fluid stable at small time steps (doc/results/fsi_3d.md, the tube).");
+      "displacements of the interface faces round it (on the interface's rim, the vertex "
+      "values), the displacement the fluid traction acts on in the solid: it keeps the thin "
+      "tube wall with its heavy fluid stable at small time steps, where the vertex values "
+      "oscillate from step to step (doc/results/fsi_3d.md).");
     prm.leave_subsection();
   }
 

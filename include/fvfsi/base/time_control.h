@@ -91,8 +91,6 @@ namespace fvfsi
     /// Backward Euler on the first step, BDF2 (variable-step) after, unless the scheme is
     /// backward Euler throughout.
     BdfCoefficients bdf() const;
-    /// Backward Euler on every step (Time/Scheme = backward Euler).
-    void use_backward_euler(const bool on) { euler_only = on; }
 
     /// "time step N (t = T s)", for messages.
     std::string step_name() const;
