@@ -84,4 +84,4 @@ echo
   "$runs/refined" "30 720 + 24 576 cells, dt = 1e-4 s" "$runs/shipped" "3 840 + 3 072 cells, dt = 1e-4 s" \
   "$runs/order_dt2.5e-5" "3 840 + 3 072 cells, dt = 2.5e-5 s"
 "$python" doc/results/fsi_3d.py tube-store "$runs/shipped.json" --order "${order[@]}" \
-  --runs "$runs/refined.json" --parallel "$runs" "$repeats"
+  --runs "$runs/dt2e-4.json" "$runs/refined.json" --parallel "$runs" "$repeats"
