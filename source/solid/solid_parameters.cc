@@ -102,7 +102,8 @@ namespace fvfsi
                       "each component's A_j, diagonal scaling of the boundary rows).");
     prm.add_parameter("Newton log", newton_log,
                       "coupled: print a line per Newton iteration (step length, residual, "
-                      "correction).");
+                      "correction) and one per trial step of its damping (the simplified "
+                      "correction over the step, and the bound it must meet).");
     const std::string& syntax = boundary_expression_syntax;
     prm.add_parameter("Fixed displacement", fixed_displacement,
                       "Patches with a given displacement u(x, t) [m]." + syntax);
