@@ -134,6 +134,16 @@ table(["case", "algorithm", "iterations", "cells", "time steps", "result", "wall
        ("CSM3 120 x 4, t <= 1 s", "segregated", "csm3_segregated"),
        ("plate with a hole, n = 179", "coupled", "plate_hole_64k_coupled"),
        ("plate with a hole, n = 179", "segregated", "plate_hole_64k_segregated")], timed_row)
+print("\n## The sparse direct solver of the Newton systems\n")
+table(["case", "algorithm", "iterations", "cells", "time steps", "result", "wall [s]"],
+      [("plate with a hole, n = 90", "coupled, UMFPACK", "plate_hole_16k_coupled"),
+       ("plate with a hole, n = 90", "coupled, KLU", "plate_hole_16k_klu"),
+       ("plate with a hole, n = 90", "segregated", "plate_hole_16k_segregated"),
+       ("plate with a hole, n = 179", "coupled, KLU", "plate_hole_64k_klu"),
+       ("thick plate alone (3D)", "coupled, UMFPACK", "thick_plate_coupled"),
+       ("thick plate alone (3D)", "coupled, KLU", "thick_plate_klu"),
+       ("thick plate alone (3D)", "segregated", "thick_plate_segregated"),
+       ("CSM1 280 x 16", "coupled, KLU", "csm1_klu")], timed_row)
 print("\n## FSI\n")
 table(["case", "solid algorithm", "coupled steps", "coupling its", "solid its per coupling it",
        "solid [s]", "solid per coupling it [ms]", "solid share of coupled steps", "fluid [s]",

@@ -61,6 +61,27 @@ for a in coupled segregated; do
     "Solid/Algorithm=$a"
 done
 
+# The sparse direct solver of the Newton systems (Solid Newton linear solver/Method: UMFPACK,
+# the default, or KLU): the plate with a hole at n = 90 (16 200 cells) and 179, the thick plate
+# of doc/results/fsi_3d.md alone (3D, 2 048 cells, 10 Pa on its upstream face), CSM1.
+run plate_hole_16k_coupled prm/plate_hole.prm "Mesh/Generator arguments=0.5: 2: 90" \
+  "Solid/Algorithm=coupled"
+run plate_hole_16k_klu prm/plate_hole.prm "Mesh/Generator arguments=0.5: 2: 90" \
+  "Solid/Algorithm=coupled" "Solid Newton linear solver/Method=KLU"
+run plate_hole_16k_segregated prm/plate_hole.prm "Mesh/Generator arguments=0.5: 2: 90" \
+  "Solid/Algorithm=segregated"
+run plate_hole_64k_klu prm/plate_hole.prm "Mesh/Generator arguments=0.5: 2: 179" \
+  "Solid/Algorithm=coupled" "Solid Newton linear solver/Method=KLU"
+plate=("Scene=solid" "Mesh/Generator=fvfsi_thick_plate" "Mesh/Generator arguments=0.0125"
+       "Mesh/Patch names=0: clamped, 1: symmetry, 2: interface" "Solid/External traction="
+       "Solid/Traction=interface: -10*(x<0.4501); 0; 0")
+run thick_plate_coupled prm/thick_plate.prm "${plate[@]}" "Solid/Algorithm=coupled"
+run thick_plate_klu prm/thick_plate.prm "${plate[@]}" "Solid/Algorithm=coupled" \
+  "Solid Newton linear solver/Method=KLU"
+run thick_plate_segregated prm/thick_plate.prm "${plate[@]}" "Solid/Algorithm=segregated"
+run csm1_klu prm/turek_hron_csm1.prm "Solid/Algorithm=coupled" \
+  "Solid Newton linear solver/Method=KLU"
+
 # FSI3 (dt = 0.75 ms, shipped meshes): 10 fluid steps, then 10 coupled steps.
 for a in segregated coupled; do
   run fsi3_$a prm/turek_hron_fsi3.prm "Coupling/Start time=0.0075" "Time/End time=0.015" \

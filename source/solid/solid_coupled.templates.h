@@ -230,9 +230,9 @@ namespace fvfsi
       dx_bar = 0; // an estimate: to 1 % with GMRES
       solve_newton_system(dx_bar, rhs, 1e-2);
       if (parameters.newton_log)
-        pcout << "fvfsi: solid Newton trial step " << lambda << ": |dx_bar| / |dx| = "
-              << newton_norm(dx_bar) / norm_dx << " (accepted if at most " << 1 - lambda / 4
-              << ")\n";
+        pcout << "fvfsi: solid Newton trial step " << lambda
+              << ": |dx_bar| / |dx| = " << newton_norm(dx_bar) / norm_dx << " (accepted if at most "
+              << 1 - lambda / 4 << ")\n";
       if (newton_norm(dx_bar) <= (1 - lambda / 4) * norm_dx || norm_dx == 0)
       {
         x = x_try;

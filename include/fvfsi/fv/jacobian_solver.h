@@ -1,7 +1,9 @@
 #pragma once
 // Solves with a Jacobian of a vector problem (e.g. ProbedJacobian's, block layout: block_size
-// consecutive unknowns per node): a sparse direct factorisation (Trilinos Amesos KLU; Amesos_Mumps
-// of Debian's Trilinos 13.2 crashed in deal.II 9.4's SolverDirect, so it is not offered), or GMRES (deal.II's, on the distributed vectors) preconditioned by Trilinos ML AMG
+// consecutive unknowns per node): a sparse direct factorisation on one rank (SuiteSparse's
+// multifrontal UMFPACK through deal.II, much faster on the wide stencils of 2D and 3D meshes, or
+// Trilinos Amesos KLU; Amesos_Mumps of Debian's Trilinos 13.2 crashed in deal.II 9.4's
+// SolverDirect, so it is not offered), or GMRES (deal.II's, on the distributed vectors) preconditioned by Trilinos ML AMG
 // for systems (block size = number of PDE equations, one constant mode per component) or by
 // Ifpack ILU(0). The factorisation / preconditioner is kept until initialize() is called again, so
 // that a Newton iteration can reuse it.
@@ -9,6 +11,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -23,10 +26,11 @@ namespace fvfsi
     enum class Method
     {
       klu,       ///< Amesos KLU (serial factorisation: the matrix is gathered on one rank)
+      umfpack,   ///< UMFPACK through deal.II (the matrix gathered on rank 0)
       gmres_amg, ///< GMRES + ML AMG for systems
       gmres_ilu  ///< GMRES + Ifpack ILU(0)
     };
-    Method method = Method::klu;
+    Method method = Method::umfpack;
     double reduction = 1e-12; ///< GMRES: relative residual reduction
     unsigned int max_iterations = 1000;
     unsigned int restart = 100; ///< GMRES: Krylov vectors before a restart
@@ -52,10 +56,16 @@ namespace fvfsi
     unsigned int solve(Vector& x, const Vector& b, const std::string& what, double reduction = -1);
 
   private:
+    /// UMFPACK: the matrix gathered and factorised on rank 0.
+    void factorize_on_root(const dealii::TrilinosWrappers::SparseMatrix& matrix);
+    /// UMFPACK: b gathered on rank 0, solved there, x sent back.
+    void solve_on_root(Vector& x, const Vector& b) const;
+
     JacobianSolverParameters parameters;
     const dealii::TrilinosWrappers::SparseMatrix* matrix = nullptr;
     dealii::SolverControl direct_control;
     std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> direct;
+    std::unique_ptr<dealii::SparseDirectUMFPACK> umfpack;
     std::unique_ptr<dealii::TrilinosWrappers::PreconditionBase> preconditioner;
   };
 } // namespace fvfsi
