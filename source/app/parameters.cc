@@ -73,6 +73,14 @@ namespace fvfsi
                       "its checkpoint (on any number of ranks) to this file's End time; the "
                       "history files and the .pvd record continue the earlier ones. Empty: start "
                       "from the beginning.");
+    prm.add_parameter(
+      "Initial state from", checkpoint.initial_state_from,
+      "Steady FSI: the Output directory of an earlier steady FSI run, on any mesh (e.g. one "
+      "twice as coarse): start from its final state (its fluid_state.txt and "
+      "interface_state.txt, written at the end of every steady FSI run), each value taken "
+      "from the nearest samples at the reference positions; the solid starts from rest. Mesh "
+      "sequencing: the converged answer does not depend on the start, the cost does. Empty: "
+      "start from rest.");
     prm.add_parameter("Plot history", plot_history,
                       "true: at the end of the run, plot every *history.txt table of the output "
                       "directory as NAME.png (one panel per column over time), with the script "

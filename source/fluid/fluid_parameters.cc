@@ -54,6 +54,16 @@ namespace fvfsi
       "the larger of max|u| and sqrt(max p - min p), p kinematic).",
       PositiveDouble(1));
     prm.add_parameter(
+      "Consistent pressure coupling", consistent_coupling,
+      "Steady: true: SIMPLEC (Van Doormaal and Raithby) instead of SIMPLE: the pressure "
+      "equation and the flux and velocity corrections take the coefficient 1 / (a_P - H1_P), "
+      "H1_P = sum_N |a_PN| / V_P (for a smooth correction the neighbours move with the cell, "
+      "which leaves the pseudo time term alone: 1 / (a_P - H1_P) ~ dt_P), and the predicted "
+      "fluxes carry the difference of the two coefficients times the last pressure gradient, "
+      "so that the converged state is SIMPLE's (the same Rhie-Chow flux). With alpha near 1 "
+      "SIMPLE's pressure correction is 1 / (1 - alpha) times too strong where viscosity "
+      "dominates, which makes fine meshes oscillate (doc/results/cavity.md).");
+    prm.add_parameter(
       "Max steady iterations", max_steady_iterations,
       "Steady: limit of pseudo time steps (exceeding it stops the run with an error).",
       Patterns::Integer(1));

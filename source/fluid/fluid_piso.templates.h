@@ -172,6 +172,7 @@ namespace fvfsi
     }
     a.update_ghost_values();
     a_star.update_ghost_values();
+    compute_consistent_coefficients();
     pressure_equation.zero();
     for (unsigned int f = 0; f < geometry.faces.size(); ++f)
     {
@@ -180,7 +181,7 @@ namespace fvfsi
         continue;
       if (face.N == invalid_cell && conditions.type(f) != Type::outlet)
       {
-        gamma_p[f] = 0; // the flux is given
+        gamma_p[f] = gamma_c[f] = 0; // the flux is given
         continue;
       }
       const double inverse_a_star =
@@ -192,7 +193,12 @@ namespace fvfsi
       c0_face[f] =
         prm.transient ? c1 * r[0] - c2 * r[1] : a_star_f[f] * (1 - relaxation) / relaxation;
       gamma_p[f] = 1 / (c0_face[f] + a_star_f[f]);
-      const double coefficient = gamma_p[f] * face.area / face.d_n;
+      gamma_c[f] = gamma_p[f];
+      if (simplec()) // 1 / (a - H1)_f, interpolated as a*_f
+        gamma_c[f] = face.N == invalid_cell ? 1 / a_tilde.local_element(face.P)
+                                            : face.w / a_tilde.local_element(face.P) +
+                                                (1 - face.w) / a_tilde.local_element(face.N);
+      const double coefficient = gamma_c[f] * face.area / face.d_n;
       if (face.N == invalid_cell)
         pressure_equation.diagonal[face.P] += coefficient; // Dirichlet (outlet), Eq. 23
       else
@@ -205,6 +211,23 @@ namespace fvfsi
     pressure_equation.copy_to(pressure_matrix);
     if (refresh_preconditioners() || !pressure_solver.initialized())
       pressure_solver.initialize(pressure_matrix);
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::compute_consistent_coefficients()
+  {
+    // a~_P = a_P - H1_P, H1_P = -sum_N a_PN / V_P: with upwind convection a*_P V_P - H1_P V_P is
+    // the net outflow plus the boundary faces' diffusion, so a~_P = c0_P + (those): about the
+    // pseudo time term alone. Kept >= c0_P where the net outflow is negative (iterates that do
+    // not conserve mass yet).
+    if (!simplec())
+      return;
+    std::vector<double> off_sum;
+    momentum.off_diagonal_sum(off_sum);
+    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+      a_tilde.local_element(c) =
+        std::max(a.local_element(c) + off_sum[c] / geometry.cell_volume[c], c0_cell[c]);
+    a_tilde.update_ghost_values();
   }
 
   template <int dim>
@@ -267,6 +290,11 @@ namespace fvfsi
       const auto r = volume_ratios(f);
       const double c1_f = prm.transient ? c1 * r[0] : c0_face[f];
       F_star[f] = gamma_p[f] * (c1_f * F_o - c2 * r[1] * F_oo + a_star_f[f] * (face.S * h_by_a));
+      // SIMPLEC: + (Gamma~_f - Gamma_f) S_f (n.grad p)_f with the pressure of the last corrector,
+      // so that F = F* - Gamma~_f S_f (n.grad p)_f is SIMPLE's flux once p stops changing.
+      if (gamma_c[f] != gamma_p[f])
+        F_star[f] += (gamma_c[f] - gamma_p[f]) * face.area *
+                     operators.laplacian.normal_gradient(f, p, grad_p, pressure_bc);
     }
   }
 
@@ -287,7 +315,7 @@ namespace fvfsi
       if (face.kind == FaceKind::interior)
         pressure_rhs.local_element(face.N) += F_star[f];
       if (face.N == invalid_cell && conditions.type(f) == Type::outlet)
-        pressure_rhs.local_element(face.P) += gamma_p[f] * face.area / face.d_n * boundary_p[f];
+        pressure_rhs.local_element(face.P) += gamma_c[f] * face.area / face.d_n * boundary_p[f];
     }
     // The flux correction below must use the gradient of the last solve's correction, so the
     // gradient is only updated between solves.
@@ -305,7 +333,7 @@ namespace fvfsi
     solve_deferred_correction(
       control, pressure_solver, pressure_matrix, pressure_rhs, p,
       [this](CellVector& rhs)
-      { operators.laplacian.add_correction(gamma_p, pressure_bc, grad_p, rhs); },
+      { operators.laplacian.add_correction(gamma_c, pressure_bc, grad_p, rhs); },
       [this]()
       {
         update_pressure_boundary_values();
@@ -323,10 +351,10 @@ namespace fvfsi
       const auto& face = geometry.faces[f];
       if (face.kind == FaceKind::ghost_boundary)
         continue;
-      if (gamma_p[f] == 0)
+      if (gamma_c[f] == 0)
         F[f] = F_star[f];
       else
-        F[f] = F_star[f] - gamma_p[f] * face.area *
+        F[f] = F_star[f] - gamma_c[f] * face.area *
                              operators.laplacian.normal_gradient(f, p, grad_p, pressure_bc);
     }
   }
@@ -335,14 +363,19 @@ namespace fvfsi
   void FluidSolver<dim>::correct_velocity()
   {
     TimerOutput::Scope scope(timer_output, "flux and velocity correction");
-    // u_P = (h_P + B^time_P / V_P - (grad p)_P) / a_P, with h from the latest u.
+    // u_P = (h_P + B^time_P / V_P - (grad p)_P) / a_P, with h from the latest u. SIMPLEC, as
+    // the fluxes: the change of grad p in this corrector divided by a~_P instead.
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
     {
       const double V = geometry.cell_volume[c];
-      const Tensor<1, dim> gp = grad_p[c];
+      const Tensor<1, dim> gp = simplec() ? grad_p_before[c] : grad_p[c];
       for (unsigned int j = 0; j < dim; ++j)
         u.components[j].local_element(c) =
           (h.components[j].local_element(c) + B_time[j][c] / V - gp[j]) / a.local_element(c);
+      if (simplec())
+        for (unsigned int j = 0; j < dim; ++j)
+          u.components[j].local_element(c) -=
+            (grad_p[c][j] - grad_p_before[c][j]) / a_tilde.local_element(c);
     }
     u.update_ghost_values();
   }

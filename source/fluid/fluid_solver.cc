@@ -47,10 +47,12 @@ namespace fvfsi
     p.update_ghost_values(); // p = 0 is readable everywhere, ghosts included
     a = geometry.make_cell_vector();
     a_star = geometry.make_cell_vector();
+    a_tilde = geometry.make_cell_vector();
+    grad_p_before = CellGradient<dim>(geometry);
     pressure_rhs = geometry.make_cell_vector();
     const unsigned int n_faces = geometry.faces.size();
-    for (auto* field : {&F, &F_old, &F_old2, &F_mesh, &F_star, &gamma_p, &a_star_f, &boundary_p,
-                        &swept, &swept_old})
+    for (auto* field : {&F, &F_old, &F_old2, &F_mesh, &F_star, &gamma_p, &gamma_c, &a_star_f,
+                        &boundary_p, &swept, &swept_old})
       field->assign(n_faces, 0.0);
     V_old = V_old2 = geometry.cell_volume;
     for (const auto& face : geometry.faces)
@@ -100,14 +102,36 @@ namespace fvfsi
   template <int dim>
   void FluidSolver<dim>::set_initial_conditions()
   {
-    // u from the expression, fluxes F_f = S_f . u_f by linear interpolation (boundary: S_f . u_b).
     FunctionParser<dim> u0(dim);
     initialize_function(u0, prm.initial_velocity, "Fluid/Initial velocity");
+    set_state(
+      [&u0](const Point<dim>& x)
+      {
+        Tensor<1, dim> value;
+        for (unsigned int j = 0; j < dim; ++j)
+          value[j] = checked_value(u0, x, j, "Fluid/Initial velocity");
+        return value;
+      },
+      {});
+  }
+
+  template <int dim>
+  void
+  FluidSolver<dim>::set_state(const std::function<Tensor<1, dim>(const Point<dim>&)>& velocity,
+                              const std::function<double(const Point<dim>&)>& kinematic_pressure)
+  {
+    // u at the cell centres, fluxes F_f = S_f . u_f by linear interpolation (boundary: S_f . u_b);
+    // all time levels alike.
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+    {
+      const Tensor<1, dim> value = velocity(geometry.centroid[c]);
       for (unsigned int j = 0; j < dim; ++j)
-        u.components[j].local_element(c) =
-          checked_value(u0, geometry.centroid[c], j, "Fluid/Initial velocity");
+        u.components[j].local_element(c) = value[j];
+      if (kinematic_pressure)
+        p.local_element(c) = kinematic_pressure(geometry.centroid[c]);
+    }
     u.update_ghost_values();
+    p.update_ghost_values();
     update_velocity_boundary_values();
     update_velocity_gradients();
     update_velocity_boundary_values();
@@ -430,6 +454,8 @@ namespace fvfsi
     for (unsigned int corrector = 0; corrector < prm.pressure_correctors; ++corrector)
     {
       compute_predicted_fluxes();
+      if (simplec())
+        grad_p_before = grad_p;
       solve_pressure(last && corrector + 1 == prm.pressure_correctors);
       correct_fluxes();
       update_pressure_boundary_values();

@@ -147,6 +147,23 @@ namespace fvfsi
     }
   }
 
+  template <int dim>
+  void FaceMatrix<dim>::off_diagonal_sum(std::vector<double>& y) const
+  {
+    y.assign(geometry.n_owned_cells(), 0.0);
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      const auto& face = geometry.faces[f];
+      if (face.kind == FaceKind::interior)
+      {
+        y[face.P] += upper[f];
+        y[face.N] += lower[f];
+      }
+      else if (face.kind == FaceKind::processor)
+        y[face.P] += upper[f];
+    }
+  }
+
   template class FaceMatrix<2>;
   template class FaceMatrix<3>;
 } // namespace fvfsi

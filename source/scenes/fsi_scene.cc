@@ -333,7 +333,8 @@ namespace fvfsi
     // Algorithm 1 without time: one "step" whose coupling iterations converge the steady coupled
     // state. Each iteration moves the mesh, converges the steady fluid on it (pseudo time steps,
     // warm-started from the last iteration's flow) and the static solid under its tractions
-    // (warm-started from the last displacement); no predictor, d starts from the reference.
+    // (warm-started from the last displacement); no predictor, d starts from the reference (or
+    // from an earlier run's state, start_from_state()).
     fluid->begin_time_step();
     solid->begin_time_step();
     vertices_old = fluid_fv->vertices();
@@ -418,6 +419,10 @@ namespace fvfsi
   template <int dim>
   void FsiScene<dim>::run()
   {
+    if (!steady && !checkpoints.initial_state_from.empty())
+      throw std::runtime_error("FSI: Initial state from applies to steady runs "
+                               "(Fluid/Transient = false); a transient run continues an earlier "
+                               "one with Restart from");
     make_grids();
     make_interface();
     if (!checkpoints.restart_from.empty())
@@ -434,11 +439,14 @@ namespace fvfsi
       if (checkpoints.interval > 0 || !checkpoints.restart_from.empty())
         throw std::runtime_error("FSI: Checkpoint interval and Restart from apply to transient "
                                  "runs; a steady run (Fluid/Transient = false) has no time steps");
+      if (!checkpoints.initial_state_from.empty())
+        start_from_state(checkpoints.initial_state_from);
       result.total_coupling_iterations = result.max_coupling_iterations = solve_steady();
       pcout << "fvfsi: FSI steady state after " << result.total_coupling_iterations
             << " coupling iterations, " << fluid->pseudo_steps() << " fluid pseudo steps, "
             << result.solid_outer_iterations << " solid outer iterations\n";
       output_results();
+      write_state();
       timer.print_summary();
       return;
     }

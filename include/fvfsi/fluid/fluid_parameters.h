@@ -40,6 +40,8 @@ namespace fvfsi
     double momentum_relaxation = 0.95; ///< steady: alpha, the local pseudo time step
     double steady_tolerance = 1e-8;    ///< steady: stop when the relative change is below
     unsigned int max_steady_iterations = 5000; ///< steady: pseudo time step limit
+    /// steady: SIMPLEC's pressure coefficient 1 / (a_P - H1_P) in place of 1 / a_P
+    bool consistent_coupling = false;
 
     unsigned int outer_correctors = 1;    ///< PIMPLE outer loops per time step (1 = PISO)
     bool flux_extrapolation = true;       ///< BDF2: first outer loop convects with 2 F^n - F^(n-1)

@@ -89,6 +89,7 @@
 #include <fvfsi/mesh/mesh_parameters.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -115,6 +116,12 @@ namespace fvfsi
     void end_time_step() override;
     /// max|u^(n+1) - u^n| / max|u^(n+1)| of the last accepted step.
     double relative_change() const { return last_change; }
+
+    /// Start from the velocity u(x) [m/s] and, if given, the kinematic pressure p(x) / rho
+    /// [m^2/s^2] at the cell centres (every time level alike; the fluxes interpolated from u):
+    /// the initial state of a run that continues an earlier one on another mesh.
+    void set_state(const std::function<dealii::Tensor<1, dim>(const dealii::Point<dim>&)>& velocity,
+                   const std::function<double(const dealii::Point<dim>&)>& kinematic_pressure);
 
     /// The driver has moved the mesh for the coming time step (FVGeometry::reinit) and passes
     /// the volumes the faces swept, FVGeometry::swept_volumes() of that motion [m^dim]. The next
@@ -211,6 +218,10 @@ namespace fvfsi
     void add_time_and_body_force_terms();
     void solve_momentum();
     void assemble_pressure_matrix();
+    /// Steady with Consistent pressure coupling: SIMPLEC's coefficients.
+    bool simplec() const { return !prm.transient && prm.consistent_coupling; }
+    /// a~_P = a_P - H1_P (SIMPLEC) or a_P, into a_tilde.
+    void compute_consistent_coefficients();
     void compute_predicted_fluxes();
     /// `last`: the last pressure corrector of the time step, whose last solve gets the full
     /// Residual reduction (the others: Corrector residual reduction).
@@ -303,6 +314,11 @@ namespace fvfsi
     std::vector<double> c0_cell; ///< c0 of each owned cell (steady: local pseudo time step)
     FaceVector c0_face;          ///< c0_f (= c1_f: backward Euler or steady)
     FaceVector F_star, gamma_p;  ///< F_f without its pressure part; Gamma_f = 1 / (c0 + a*_f)
-    CellVector pressure_rhs;     ///< -div F* and the outlet sources (without the correction)
+    /// The coefficient of the pressure equation and of the flux correction: Gamma_f, or with
+    /// Consistent pressure coupling (steady) SIMPLEC's 1 / (a - H1)_f.
+    FaceVector gamma_c;
+    CellVector a_tilde;              ///< SIMPLEC: a_P - H1_P [1/s] (else a_P), ghosted
+    CellGradient<dim> grad_p_before; ///< SIMPLEC: grad p before the corrector's pressure solve
+    CellVector pressure_rhs;         ///< -div F* and the outlet sources (without the correction)
   };
 } // namespace fvfsi

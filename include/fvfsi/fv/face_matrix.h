@@ -37,6 +37,8 @@ namespace fvfsi
 
     /// y_P = sum_N a_PN x_N for every owned cell P (x with up-to-date ghosts).
     void off_diagonal_product(const CellVector& x, std::vector<double>& y) const;
+    /// y_P = sum_N a_PN for every owned cell P (the row sums of the off-diagonal part).
+    void off_diagonal_sum(std::vector<double>& y) const;
 
     std::vector<double> diagonal; ///< a_P, per owned cell
     std::vector<double> upper;    ///< per face: a_PN (interior and processor faces)

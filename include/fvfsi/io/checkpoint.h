@@ -53,6 +53,9 @@ namespace fvfsi
     unsigned int interval = 0;
     /// Output directory of an earlier run whose checkpoint the run continues from ("": none).
     std::string restart_from = "";
+    /// Output directory of an earlier steady run (any mesh) whose final state the run starts from
+    /// ("": none); see io/point_values.h.
+    std::string initial_state_from = "";
   };
 
   /// Whether a face value keeps (even: a position, a face-centre value) or flips (odd: a flux, an

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -56,7 +57,13 @@ namespace fvfsi
     const FVGeometry<dim>& geometry() const { return *fv; }
     const TimeControl& time() const { return clock; }
     /// Write a checkpoint every `interval` time steps; continue from `restart_from`'s checkpoint.
-    void set_checkpoints(const CheckpointParameters& parameters) { checkpoints = parameters; }
+    void set_checkpoints(const CheckpointParameters& parameters)
+    {
+      if (!parameters.initial_state_from.empty())
+        throw std::runtime_error("Initial state from: only steady FSI runs (Scene = fsi, "
+                                 "Fluid/Transient = false) start from an earlier run's state");
+      checkpoints = parameters;
+    }
 
   protected:
     /// `probe_parameter` names the probes' .prm entry in messages.
