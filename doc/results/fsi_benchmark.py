@@ -270,6 +270,8 @@ def cavity_study(png, runs):
                      f"{r['wall_seconds']:.1f} |")
     lines.append(f"\nObserved order (Eq. 34, three finest meshes): u_y(A) "
                  f"{study['order_uy_A']:.2f}, F_y {study['order_Fy']:.2f} (paper: 1.85, 1.91)")
+    if png is None:
+        return study, "\n".join(lines)
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -343,6 +345,14 @@ if __name__ == "__main__":
                 runs.append(json.load(f))
         study, text = cavity_study(sys.argv[2], runs)
         store("cavity", study)
+        print(text)
+    elif command == "cavity-variant":  # NAME RUN.json...: stored as cavity[NAME], no plot
+        runs = []
+        for path in sys.argv[3:]:
+            with open(path) as f:
+                runs.append(json.load(f))
+        study, text = cavity_study(None, runs)
+        store("cavity", {sys.argv[2]: study})
         print(text)
     elif command == "plot":
         plot(case, sys.argv[3], sys.argv[4], float(sys.argv[5]), float(sys.argv[6]))

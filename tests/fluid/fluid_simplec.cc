@@ -11,9 +11,7 @@
 //       differences ~1e-9, the steady tolerance);
 //   (c) at Re = 1 fewer pseudo steps than SIMPLE from alpha = 0.95.
 // Printed: verdicts, and the pseudo steps to stdout only (they depend on round-off).
-#include <fvfsi/scenes/fluid_scene.h>
-
-#include "../test_utilities.h"
+#include "steady_channel.h"
 
 #include <cmath>
 #include <cstdio>
@@ -21,47 +19,15 @@
 
 using namespace fvfsi_test;
 
-struct Result
-{
-  double drag = 0, relaxation = 0;
-  unsigned int pseudo_steps = 0;
-  std::string error;
-};
-
-Result run(const double U, const std::vector<std::string>& extra)
-{
-  std::vector<std::string> overrides = {
-    "Mesh/Generator arguments=12", "Fluid/Steady tolerance=1e-9", "Output directory=out",
-    format("Fluid/Velocity inlet=inlet: %g*1.5*4*y*(0.41-y)/0.41^2; 0", U)};
-  overrides.insert(overrides.end(), extra.begin(), extra.end());
-  const auto p = shipped_case("turek_hron_cfd2", overrides);
-  std::filesystem::create_directories("out");
-  fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, p->time, MPI_COMM_WORLD, ".",
-                             "out");
-  Result r;
-  try
-  {
-    scene.run();
-  }
-  catch (const std::exception& e)
-  {
-    r.error = e.what();
-  }
-  r.drag = scene.body_force()[0];
-  r.relaxation = scene.solver().momentum_relaxation();
-  r.pseudo_steps = scene.solver().pseudo_steps();
-  return r;
-}
-
 int main(int argc, char** argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream out = open_output();
   for (const double U : {0.01, 0.2, 1.0})
   {
-    const Result simplec = run(U, {"Fluid/Consistent pressure coupling=true"});
-    const Result simple = run(U, {});
-    const Result fixed = run(U, {"Fluid/Momentum relaxation=0.7"});
+    const Result simplec = run_steady_channel(U, {"Fluid/Consistent pressure coupling=true"});
+    const Result simple = run_steady_channel(U, {});
+    const Result fixed = run_steady_channel(U, {"Fluid/Momentum relaxation=0.7"});
     std::printf("U = %g: SIMPLEC %u pseudo steps (alpha %.3g at the end), SIMPLE %u (alpha %.3g), "
                 "SIMPLE at alpha 0.7 %u; drag %.12g / %.12g\n",
                 U, simplec.pseudo_steps, simplec.relaxation, simple.pseudo_steps, simple.relaxation,

@@ -19,9 +19,7 @@
 //       steps each: a slow but converging iteration, as the cavity of doc/results/cavity.md at
 //       h = 0.0125, needs the second window), not after the step limit (5000).
 // Printed: verdicts, and the pseudo steps of (a) to stdout only (they depend on round-off).
-#include <fvfsi/scenes/fluid_scene.h>
-
-#include "../test_utilities.h"
+#include "steady_channel.h"
 
 #include <cmath>
 #include <cstdio>
@@ -29,46 +27,14 @@
 
 using namespace fvfsi_test;
 
-struct Result
-{
-  double drag = 0, relaxation = 0;
-  unsigned int pseudo_steps = 0;
-  std::string error;
-};
-
-Result run(const double U, const std::vector<std::string>& extra)
-{
-  std::vector<std::string> overrides = {
-    "Mesh/Generator arguments=12", "Fluid/Steady tolerance=1e-9", "Output directory=out",
-    format("Fluid/Velocity inlet=inlet: %g*1.5*4*y*(0.41-y)/0.41^2; 0", U)};
-  overrides.insert(overrides.end(), extra.begin(), extra.end());
-  const auto p = shipped_case("turek_hron_cfd2", overrides);
-  std::filesystem::create_directories("out");
-  fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, p->time, MPI_COMM_WORLD, ".",
-                             "out");
-  Result r;
-  try
-  {
-    scene.run();
-  }
-  catch (const std::exception& e)
-  {
-    r.error = e.what();
-  }
-  r.drag = scene.body_force()[0];
-  r.relaxation = scene.solver().momentum_relaxation();
-  r.pseudo_steps = scene.solver().pseudo_steps();
-  return r;
-}
-
 int main(int argc, char** argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream out = open_output();
   for (const double U : {0.01, 0.2, 1.0})
   {
-    const Result shipped = run(U, {});
-    const Result fixed = U < 1 ? run(U, {"Fluid/Momentum relaxation=0.7"}) : shipped;
+    const Result shipped = run_steady_channel(U, {});
+    const Result fixed = U < 1 ? run_steady_channel(U, {"Fluid/Momentum relaxation=0.7"}) : shipped;
     std::printf("U = %g: %u pseudo steps, alpha %.3g at the end (alpha 0.7: %u steps), drag %.9g "
                 "/ %.9g\n",
                 U, shipped.pseudo_steps, shipped.relaxation, fixed.pseudo_steps, shipped.drag,
@@ -81,7 +47,7 @@ int main(int argc, char** argv)
                     std::abs(shipped.drag - fixed.drag) <= 1e-6 * std::abs(fixed.drag));
     out << "\n";
   }
-  const Result stuck = run(1.0, {"Fluid/Steady tolerance=1e-16"});
+  const Result stuck = run_steady_channel(1.0, {"Fluid/Steady tolerance=1e-16"});
   std::printf("tolerance 1e-16: %s\n", stuck.error.c_str());
   const bool which = stuck.error.find("oscillates") != std::string::npos ||
                      stuck.error.find("stagnates") != std::string::npos;

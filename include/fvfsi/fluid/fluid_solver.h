@@ -133,8 +133,9 @@ namespace fvfsi
     /// Returns the number of pseudo steps. Where the change makes no progress (the geometric
     /// mean over 50 pseudo steps not 5% below that of the 50 before), alpha is lowered, 1 - alpha
     /// doubled: the pseudo-transient iteration with alpha near 1 and no pressure relaxation is
-    /// unstable where viscosity dominates (CFD2 at Re = 1 needs alpha <= 0.8, fine cavity meshes
-    /// too). Below 0.3 it stops with an error saying whether the change oscillates or
+    /// unstable where viscosity dominates with SIMPLE's coefficients (CFD2 at Re = 1 needs alpha
+    /// <= 0.8, the cavity at h = 0.0125 too), not with SIMPLEC's (Consistent pressure
+    /// coupling). Below 0.3 it stops with an error saying whether the change oscillates or
     /// stagnates (a flow without a steady state, e.g. vortex shedding).
     unsigned int solve_steady();
     /// Steady: alpha in use now (Momentum relaxation, or lower after solve_steady()).
