@@ -328,41 +328,6 @@ namespace fvfsi
   }
 
   template <int dim>
-  unsigned int FsiScene<dim>::solve_steady()
-  {
-    // Algorithm 1 without time: one "step" whose coupling iterations converge the steady coupled
-    // state. Each iteration moves the mesh, converges the steady fluid on it (pseudo time steps,
-    // warm-started from the last iteration's flow) and the static solid under its tractions
-    // (warm-started from the last displacement); no predictor, d starts from the reference (or
-    // from an earlier run's state, start_from_state()).
-    fluid->begin_time_step();
-    solid->begin_time_step();
-    vertices_old = fluid_fv->vertices();
-    const unsigned int k = converge_interface();
-    fluid->end_time_step();
-    solid->end_time_step();
-    return k;
-  }
-
-  template <int dim>
-  void FsiScene<dim>::record_steady_iteration(const unsigned int k, const double residual)
-  {
-    const Tensor<1, dim> force = fluid_force();
-    std::vector<double> line = {
-      double(k), residual, double(fluid->pseudo_steps()), double(result.solid_outer_iterations),
-      force[0],  force[1]};
-    for (unsigned int i = 0; i < probes.size(); ++i)
-      append(line, solid_probe(i));
-    line.push_back(volume_ratio);
-    history->write_line(line);
-    last_force = force;
-    pcout << "fvfsi: FSI steady coupling iteration " << k << ": relative interface residual "
-          << residual << " (tolerance " << prm.coupling.tolerance << "), fluid pseudo steps "
-          << fluid->pseudo_steps() << ", solid outer iterations " << result.solid_outer_iterations
-          << "\n";
-  }
-
-  template <int dim>
   Tensor<1, dim> FsiScene<dim>::fluid_force() const
   {
     return fluid->patches_force(fluid_mesh_parameters.patch_ids(

@@ -127,7 +127,7 @@ namespace fvfsi
     void capture_step_start();
     void return_to_step_start();
     /// Steady: write the state a run on another mesh can start from (fluid_state.txt,
-    /// interface_state.txt in the output directory; fsi_scene_state.cc).
+    /// interface_state.txt in the output directory; fsi_scene_steady.cc).
     void write_state() const;
     /// Start from the state an earlier steady run wrote into `directory` (mesh sequencing).
     void start_from_state(const std::string& directory);

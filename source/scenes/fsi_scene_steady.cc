@@ -1,6 +1,7 @@
-// The steady FSI scene's state files (io/point_values.h): written at the end of a steady run,
-// read by a run on another mesh as its start (`Initial state from`, mesh sequencing). The rest of
-// the scene is in fsi_scene.cc.
+// The steady FSI path of the scene: its solve, its history line per coupling iteration, and its
+// state files (io/point_values.h), written at the end of a steady run and read by a run on
+// another mesh as its start (`Initial state from`, mesh sequencing). The rest of the scene is in
+// fsi_scene.cc.
 #include <fvfsi/io/point_values.h>
 #include <fvfsi/scenes/fsi_scene.h>
 
@@ -28,6 +29,41 @@ namespace fvfsi
       return t;
     }
   } // namespace
+
+  template <int dim>
+  unsigned int FsiScene<dim>::solve_steady()
+  {
+    // Algorithm 1 without time: one "step" whose coupling iterations converge the steady coupled
+    // state. Each iteration moves the mesh, converges the steady fluid on it (pseudo time steps,
+    // warm-started from the last iteration's flow) and the static solid under its tractions
+    // (warm-started from the last displacement); no predictor, d starts from the reference (or
+    // from an earlier run's state, start_from_state()).
+    fluid->begin_time_step();
+    solid->begin_time_step();
+    vertices_old = fluid_fv->vertices();
+    const unsigned int k = converge_interface();
+    fluid->end_time_step();
+    solid->end_time_step();
+    return k;
+  }
+
+  template <int dim>
+  void FsiScene<dim>::record_steady_iteration(const unsigned int k, const double residual)
+  {
+    const Tensor<1, dim> force = fluid_force();
+    std::vector<double> line = {
+      double(k), residual, double(fluid->pseudo_steps()), double(result.solid_outer_iterations),
+      force[0],  force[1]};
+    for (unsigned int i = 0; i < probes.size(); ++i)
+      append(line, solid_probe(i));
+    line.push_back(volume_ratio);
+    history->write_line(line);
+    last_force = force;
+    pcout << "fvfsi: FSI steady coupling iteration " << k << ": relative interface residual "
+          << residual << " (tolerance " << prm.coupling.tolerance << "), fluid pseudo steps "
+          << fluid->pseudo_steps() << ", solid outer iterations " << result.solid_outer_iterations
+          << "\n";
+  }
 
   template <int dim>
   void FsiScene<dim>::write_state() const
@@ -83,8 +119,12 @@ namespace fvfsi
   }
 
   // The members defined here (the class itself is instantiated in fsi_scene.cc).
+  template unsigned int FsiScene<2>::solve_steady();
+  template void FsiScene<2>::record_steady_iteration(unsigned int, double);
   template void FsiScene<2>::write_state() const;
   template void FsiScene<2>::start_from_state(const std::string&);
+  template unsigned int FsiScene<3>::solve_steady();
+  template void FsiScene<3>::record_steady_iteration(unsigned int, double);
   template void FsiScene<3>::write_state() const;
   template void FsiScene<3>::start_from_state(const std::string&);
 } // namespace fvfsi
