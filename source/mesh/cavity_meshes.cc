@@ -182,11 +182,43 @@ namespace fvfsi
 
   void make_cavity_plate(const std::string& arguments, Triangulation<2>& tria)
   {
-    const double h = cell_size("fvfsi_cavity_plate", arguments);
+    // "h" (uniform) or "h: beta" (graded): the cells keep their count, (4/h) x max(2, 0.4/h), and
+    // with beta > 1 shrink towards the clamped ends and both surfaces. The map
+    // s -> sign(s) (1 - (1 - |s|)^beta) of s in [-1, 1] (across the length and the thickness)
+    // makes the end cells Delta_s^beta long: a grading for the stress singularities at the four
+    // corners where the clamped ends meet the surfaces (cavity.md).
+    const auto items = Utilities::split_string_list(arguments, ':');
+    double beta = 1;
+    if (items.size() == 2)
+    {
+      try
+      {
+        beta = Utilities::string_to_double(items[1]);
+      }
+      catch (...)
+      {
+        beta = 0;
+      }
+    }
+    if (items.size() > 2 || !(beta >= 1 && beta <= 3))
+      throw std::runtime_error("fvfsi_cavity_plate needs `h` or `h: beta` with the grading "
+                               "exponent 1 <= beta <= 3 (1: uniform), got `" +
+                               arguments + "`");
+    const double h = cell_size("fvfsi_cavity_plate", items.empty() ? "" : items[0]);
     const unsigned int n_x = static_cast<unsigned int>(std::round(4 / h));
     const unsigned int n_y = std::max(2u, static_cast<unsigned int>(std::round(0.4 / h)));
     GridGenerator::subdivided_hyper_rectangle(tria, {n_x, n_y}, Point<2>(2, -1.4), Point<2>(6, -1),
                                               true);
+    if (beta != 1)
+    {
+      const auto graded = [beta](const double s)
+      { return (s < 0 ? -1 : 1) * (1 - std::pow(1 - std::abs(s), beta)); };
+      GridTools::transform(
+        [&](const Point<2>& p) {
+          return Point<2>(4 + 2 * graded((p[0] - 4) / 2), -1.2 + 0.2 * graded((p[1] + 1.2) / 0.2));
+        },
+        tria);
+    }
     // colorize: 0 x = 2, 1 x = 6, 2 y = -1.4, 3 y = -1 -> 0 clamped, 1 bottom, 2 interface.
     for (const auto& face : tria.active_face_iterators())
       if (face->at_boundary())

@@ -22,6 +22,10 @@
 //    radial error of the arc boundary vertices < 1e-12 (round-off of cos/sin on a radius 0.25;
 //    a vertex left on a chord would be off by r (1 - cos(theta/2)) ~ 1e-3), and the area again
 //    equals exact + D for the refined chords;
+//  - the graded plate `0.05: 1.5` (cells shrinking towards the clamped ends and both surfaces):
+//    the uniform plate's cell count, area and boundary lengths (1e-12), its end cells exactly
+//    2 Delta_s^beta long and its surface cells 0.2 Delta_s^beta thick (the map's values, 1e-12),
+//    its middle cells beta h wide to O(Delta_s) (the map's slope at the middle);
 //  - bad arguments are rejected with a message naming the generator.
 // Printed mesh quality (owned cells; identical for any number of ranks): the cell aspect ratio
 // (longest / shortest edge), the interior angles, the edge lengths / h, and the non-orthogonality
@@ -46,11 +50,11 @@ namespace
   const Point<2> centres[2] = {Point<2>(1.75, -0.25), Point<2>(6.25, -0.25)};
 
   void make(parallel::distributed::Triangulation<2>& tria, const std::string& generator,
-            const double h, const unsigned int refinements = 0)
+            const double h, const unsigned int refinements = 0, const std::string& extra = "")
   {
     fvfsi::MeshParameters p;
     p.generator = generator;
-    p.generator_arguments = format("%g", h);
+    p.generator_arguments = format("%g", h) + extra;
     p.n_global_refinements = refinements;
     p.distortion = 0;
     fvfsi::make_mesh(p, tria);
@@ -279,6 +283,44 @@ namespace
     return s;
   }
 
+  /// The graded plate `h: beta`: the same cells, area and boundaries as the uniform one; the
+  /// cells at the clamped ends (x = 2, 6) Delta_s^beta long in x with Delta_s = 2 h / 4, those at
+  /// the surfaces 0.2 Delta_s^beta thick with Delta_s = 2 h / 0.4; the cells at the middle beta
+  /// times wider than uniform (to first order in Delta_s).
+  void check_graded_plate(std::ostream& out, const double h, const double beta)
+  {
+    parallel::distributed::Triangulation<2> tria(MPI_COMM_WORLD);
+    make(tria, "fvfsi_cavity_plate", h, 0, format(": %g", beta));
+    const fvfsi::FVGeometry<2> fv(tria);
+    const Summary s = summarise(tria, fv, 2, false);
+    out << "--- fvfsi_cavity_plate " << format("%g: %g", h, beta) << ": "
+        << tria.n_global_active_cells() << " cells" << std::endl;
+    check(out, "  as many cells as uniform",
+          tria.n_global_active_cells() == std::lround(4 / h) * std::lround(0.4 / h));
+    check(out, "  plate area = 1.6", std::abs(s.area - 1.6), 1e-12);
+    check(out, "  all cell volumes positive", s.positive);
+    double dx_min = 1e9, dy_min = 1e9, dx_max = 0;
+    for (const auto& cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+      {
+        const double dx = cell->extent_in_direction(0), dy = cell->extent_in_direction(1);
+        dx_min = std::min(dx_min, dx);
+        dy_min = std::min(dy_min, dy);
+        dx_max = std::max(dx_max, dx);
+      }
+    dx_min = Utilities::MPI::min(dx_min, MPI_COMM_WORLD);
+    dy_min = Utilities::MPI::min(dy_min, MPI_COMM_WORLD);
+    dx_max = Utilities::MPI::max(dx_max, MPI_COMM_WORLD);
+    const double ds_x = 2 * h / 4, ds_y = 2 * h / 0.4;
+    out << format("  end cell %.6e x %.6e, middle cell width %.6e", dx_min, dy_min, dx_max)
+        << std::endl;
+    check(out, "  end cells Delta_s^beta long", std::abs(dx_min - 2 * std::pow(ds_x, beta)), 1e-12);
+    check(out, "  surface cells 0.2 Delta_s^beta thick",
+          std::abs(dy_min - 0.2 * std::pow(ds_y, beta)), 1e-12);
+    check(out, "  middle cells beta h wide to O(Delta_s)", std::abs(dx_max / h - beta), 2 * ds_x);
+    check_boundaries(out, s, {{0, 0.8}, {1, 4.0}, {2, 4.0}});
+  }
+
   void check_rejected(std::ostream& out, const std::string& generator, const std::string& arguments)
   {
     parallel::distributed::Triangulation<2> tria(MPI_COMM_WORLD);
@@ -323,9 +365,12 @@ int main(int argc, char** argv)
           std::max(fluid.interface_y_error, plate.interface_y_error), 1e-12);
     check_fluid(out, h, 1);
   }
+  check_graded_plate(out, 0.05, 1.5);
   out << "--- bad arguments" << std::endl;
   check_rejected(out, "fvfsi_cavity_channel", "0.3");
   check_rejected(out, "fvfsi_cavity_channel", "0.03");
   check_rejected(out, "fvfsi_cavity_channel", "0.1: 2");
   check_rejected(out, "fvfsi_cavity_plate", "h");
+  check_rejected(out, "fvfsi_cavity_plate", "0.1: 0.5");
+  check_rejected(out, "fvfsi_cavity_plate", "0.1: 1.5: 2");
 }

@@ -4,9 +4,9 @@
 //   (a) h = 0.1 from rest, and from the state of h = 0.2 (a mesh twice as coarse): the same
 //       u_y(A) to 1e-5 relative (the two runs stop at different points inside the
 //       coupling tolerance, 1e-6 |d~|, and the steady fluid's, 1e-6 per pseudo step; measured
-//       1.4e-7), and fewer fluid pseudo steps and coupling iterations from the coarse state
-//       (measured 147 against 206, 5 against 6, with the shipped SIMPLEC; the gain the fine
-//       meshes of doc/results/cavity.md take);
+//       2.0e-8), and fewer fluid pseudo steps and coupling iterations from the coarse state
+//       (measured 147 against 209, 5 against 7, with the shipped SIMPLEC and Newton solid, on
+//       uniform plates; the gain the fine meshes of doc/results/cavity.md take);
 //   (b) the errors: a missing state names the parameter and the file; a transient run refuses it.
 // Verdicts only: np = 1 and np = 2 write the same file.
 #include <fvfsi/scenes/fsi_scene.h>
