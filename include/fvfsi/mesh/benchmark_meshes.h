@@ -37,8 +37,12 @@ namespace fvfsi
    *   Boundary ids: 0 inlet (x = 0), 1 outlet (x = 14), 2 walls (channel top and floor, cavity
    *   walls, rounded corners), 3 interface (the cavity floor y = -1).
    *
-   * fvfsi_cavity_plate  h   (the elastic cavity bottom of the same benchmark)
+   * fvfsi_cavity_plate  h[: beta]   (the elastic cavity bottom of the same benchmark)
    *   The plate [2, 6] x [-1.4, -1] as (4/h) x max(2, round(0.4/h)) cells (same conditions on h).
+   *   With a grading exponent 1 < beta <= 3 the cells shrink towards the clamped ends and both
+   *   surfaces (s -> sign(s) (1 - (1 - |s|)^beta) across the length and the thickness), for the
+   *   stress singularities at the four corners; the interface vertices then no longer match the
+   *   fluid's (the transfer is non-matching anyway).
    *   Boundary ids: 0 clamped (x = 2 and x = 6), 1 bottom (y = -1.4), 2 interface (top, y = -1).
    *
    * fvfsi_tube_fluid  R: L: n   (3D; paper section 4.4, the fluid in the elastic tube)
