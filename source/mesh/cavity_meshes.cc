@@ -185,8 +185,9 @@ namespace fvfsi
     // "h" (uniform) or "h: beta" (graded): the cells keep their count, (4/h) x max(2, 0.4/h), and
     // with beta > 1 shrink towards the clamped ends and both surfaces. The map
     // s -> sign(s) (1 - (1 - |s|)^beta) of s in [-1, 1] (across the length and the thickness)
-    // makes the end cells Delta_s^beta long: a grading for the stress singularities at the four
-    // corners where the clamped ends meet the surfaces (cavity.md).
+    // makes the end cells Delta_s^beta of the half-length (half-thickness) long, Delta_s the
+    // uniform step in s: a grading for the stress singularities at the four corners where the
+    // clamped ends meet the surfaces (cavity.md).
     const auto items = Utilities::split_string_list(arguments, ':');
     double beta = 1;
     if (items.size() == 2)
