@@ -80,8 +80,8 @@ for h in 0.1 0.05 0.025 0.0125; do
   echo "$row |"
 done
 
-# The plate alone again, Newton solid (Solid/Algorithm = coupled: the segregated solid diverges on
-# the graded plates' thin end cells), one mesh finer (and the uniform plate two finer), uniform
+# The plate alone again, Newton solid (Solid/Algorithm = coupled: the segregated solid fails on
+# graded plates, cavity.md), one mesh finer (and the uniform plate two finer), uniform
 # and graded (`fvfsi_cavity_plate` arguments `h: beta`, cells shrinking towards the clamped ends
 # and both surfaces): the uniform plate's order over five meshes and the limit both reach.
 echo
