@@ -6,18 +6,20 @@
 # the wall time of the coupled steps (summary.json: coupled_wall_seconds) and of the whole run,
 # the medians, the speed-up and the efficiency T1 / (2 T2), and writes RUN_DIRECTORY/parallel.png
 # (the seconds of each TimerOutput section on 1 and 2 ranks, median runs). Needs two free cores;
-# a completed run in RUN_DIRECTORY is not run again.
-#   usage: doc/results/fsi_parallel.sh [path/to/fvfsi [RUN_DIRECTORY [REPEATS]]]
+# a completed run in RUN_DIRECTORY is not run again. Arguments after REPEATS go to every run (e.g.
+# --set "Solid/Algorithm=coupled").
+#   usage: doc/results/fsi_parallel.sh [path/to/fvfsi [RUN_DIRECTORY [REPEATS [--set KEY=VALUE ...]]]]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 fvfsi=${1:-build/fvfsi}
 runs=${2:-build/fsi_parallel}
 repeats=${3:-3}
+shift $(( $# < 3 ? $# : 3 ))
 mkdir -p "$runs"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load: $(cut -d' ' -f1-3 /proc/loadavg); commit $(git rev-parse --short HEAD)"
 set_args=(--set "Coupling/Start time=0.0075" --set "Time/End time=0.0825"
-          --set "Fluid scene/Output interval=0")
+          --set "Fluid scene/Output interval=0" "$@")
 for r in $(seq 1 "$repeats"); do
   for np in 1 2; do
     out=$runs/np${np}_$r
