@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
 
 namespace fvfsi
@@ -108,19 +107,6 @@ namespace fvfsi
                                             const InterfaceZone<dim>& target)
       : weight(target.n_faces())
   {
-    // Two patches that describe the same surface have the same area, up to the chords of a
-    // curved surface (a circle of 4 chords against 16: 9%). Faces parallel to each other a
-    // small distance apart pass the overlap test below, so compare the areas first: the outer
-    // surface of the 1 mm thick elastic tube has 1.2 times the area of its inner, wetted one.
-    const auto area = [](const InterfaceZone<dim>& zone)
-    { return std::accumulate(zone.face_area.begin(), zone.face_area.end(), 0.0); };
-    const double source_area = area(source), target_area = area(target);
-    if (std::abs(source_area - target_area) > 0.1 * std::max(source_area, target_area))
-      throw std::runtime_error("Interfaces " + target.name + " and " + source.name +
-                               ": their areas differ by more than 10% (" +
-                               Utilities::to_string(target_area) + " and " +
-                               Utilities::to_string(source_area) + (dim == 3 ? " m^2" : " m") +
-                               "): do the two interface patches describe the same surface?");
     std::vector<BoundingBox<dim>> boxes;
     for (unsigned int k = 0; k < source.n_faces(); ++k)
       boxes.push_back(face_box(source, k));

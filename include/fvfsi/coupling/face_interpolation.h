@@ -29,8 +29,8 @@ namespace fvfsi
   public:
     /// Weights from the zones' geometry (collective only in that every rank does the same).
     /// A source face counts for a target face if it faces it (|n_j . n_k| > 0.5) and its centre
-    /// lies within half the target face's size of the target plane. Throws, naming both zones,
-    /// if a target face has no source face or if the zones' areas differ by more than 10%.
+    /// lies within half the target face's size of the target plane. Throws if a target face
+    /// has no source face, naming both zones.
     FaceInterpolation(const InterfaceZone<dim>& source, const InterfaceZone<dim>& target);
 
     /// Eq. 32 for every target face.
