@@ -10,10 +10,10 @@
 // all ranks meet in one MPI_Allreduce, as CG and an AMG V-cycle meet at every scalar product and
 // ghost exchange; `syncs` such rounds. The work per rank shrinks exactly as 1/P and nothing is
 // serial, so T(1) / (P T(P)) < 1 measures only the machine: two virtual CPUs whose speeds
-// fluctuate independently make every round wait for the slower of the two. On 47 160 cells one
-// sweep is about 50 us on one rank of the 2-core test machines, so 4 sweeps per round is about the
-// work fvfsi's pressure CG does between two meetings of the ranks (3.6 ms per CG iteration
-// with its V-cycle, some 15-20 scalar products and ghost exchanges; performance.md section 8).
+// fluctuate independently make every round wait for the slower of the two. On 47 104 cells one
+// sweep takes about 70 us on one rank of the 2-core Intel Xeon test machine (1.458 s for 5 000
+// rounds of 4), so 1-4 sweeps per round bracket the work fvfsi's pressure CG does between two
+// meetings of the ranks (performance.md section 8).
 //
 // Prints one line: ranks, cells, sweeps per sync, syncs, the slowest rank's wall seconds, and a
 // checksum (only so that the compiler keeps the work).
@@ -22,7 +22,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
