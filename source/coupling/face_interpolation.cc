@@ -126,7 +126,11 @@ namespace fvfsi
       std::sort(candidates.begin(), candidates.end()); // a fixed summation order
       for (const unsigned int k : candidates)
       {
-        if (std::abs(target.face_normal[j] * source.face_normal[k]) < 0.5 ||
+        // The two sides face each other: out of the solid is into the fluid, so their outward
+        // normals point against each other. A surface parallel to the interface faces the same
+        // way (the far side of a thin flag or wall, within half a face size on a coarse mesh)
+        // and is never taken for it.
+        if (target.face_normal[j] * source.face_normal[k] > -0.5 ||
             std::abs((source.face_centre[k] - target.face_centre[j]) * target.face_normal[j]) >
               0.5 * size)
           continue;
@@ -141,7 +145,8 @@ namespace fvfsi
           Utilities::to_string(target.face_centre[j][1]) +
           (dim == 3 ? ", " + Utilities::to_string(target.face_centre[j][2]) : std::string()) +
           ") m overlaps no face of " + source.name +
-          ": do the two interface patches describe the same surface?");
+          " that faces it (outward normals against each other): do the two interface patches "
+          "describe the same surface, seen from its two sides?");
     }
   }
 
@@ -163,6 +168,15 @@ namespace fvfsi
     for (const auto& [k, w] : weight[j])
       sum += w;
     return sum;
+  }
+
+  template <int dim>
+  std::pair<double, double> FaceInterpolation<dim>::coverage_range() const
+  {
+    std::pair<double, double> range(1e300, 0);
+    for (unsigned int j = 0; j < weight.size(); ++j)
+      range = {std::min(range.first, coverage(j)), std::max(range.second, coverage(j))};
+    return range;
   }
 
   template class FaceInterpolation<2>;

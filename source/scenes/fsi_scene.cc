@@ -399,6 +399,10 @@ namespace fvfsi
           << fluid_zone->n_faces() << " fluid / " << solid_zone->n_faces()
           << " solid faces, coupling "
           << selection_name(CouplingParameters::method_names, prm.coupling.method) << "\n";
+    const auto [least, most] = traction_map->coverage_range();
+    pcout << "fvfsi: interface: the fluid faces cover each solid face " << least << " to " << most
+          << " times (1 where the sides match), the fluid points lie within "
+          << displacement_map->max_gap() << " m of the solid faces\n";
     if (steady)
     {
       if (checkpoints.interval > 0 || !checkpoints.restart_from.empty())
@@ -533,6 +537,10 @@ namespace fvfsi
     summary.set_result("min_cell_volume_ratio", result.min_volume_ratio);
     summary.set_result("solid_outer_iterations", result.solid_outer_iterations);
     summary.set_result("coupled_wall_seconds", result.coupled_wall_seconds);
+    const auto [least, most] = traction_map->coverage_range();
+    summary.set_result("interface_coverage_min", least);
+    summary.set_result("interface_coverage_max", most);
+    summary.set_result("interface_max_gap", displacement_map->max_gap());
     // The global interface zones' traffic: the bytes every rank receives from the others in the
     // two gathers of a coupling iteration, summed over the ranks (0 on one rank).
     const double bytes = Utilities::MPI::sum(

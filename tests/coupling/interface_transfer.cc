@@ -11,8 +11,11 @@
 //   (c) 2D circular interface r = 0.5 between a shell (fluid) and a disk (solid), on three
 //       refinements: the two polygons differ by O(h^2);
 //   (d) 3D spherical interface, shell around a ball, four refinements (the finest: 3072 fluid
-//       and 1536 solid faces).
-// Asserted: (a, b) every solid face fully covered (sum_k w_jk = 1 to 1e-12), the total force
+//       and 1536 solid faces);
+//   (e) 2D thin flag (0.02 thick, 4 faces of 0.25 on each side) in a slot between two fluid
+//       boxes, both of its long sides one interface: the far side of the flag lies within half a
+//       face size of each solid face but faces the same way, and must not be taken for it.
+// Asserted: (a, b, e) every solid face fully covered (sum_k w_jk = 1 to 1e-12), the total force
 // sum_j S_j t_j the same on both sides to 1e-12 relative for a non-polynomial traction, a linear
 // displacement field transferred exactly (1e-12 relative), zero gap; (c, d) coverage within 1e-2
 // (3D: 5e-2) of 1, and the vertex transfer error of a linear field (about |B| x gap, the distance
@@ -63,15 +66,16 @@ struct Transfer
          gap = 0;
 };
 
-/// Both transfers between patch `fluid_patch` of `fluid` and patch `solid_patch` of `solid`.
+/// Both transfers between patches `fluid_patches` of `fluid` and `solid_patches` of `solid`.
 template <int dim>
-Transfer
-transfer(const parallel::distributed::Triangulation<dim>& fluid, const unsigned int fluid_patch,
-         const parallel::distributed::Triangulation<dim>& solid, const unsigned int solid_patch)
+Transfer transfer(const parallel::distributed::Triangulation<dim>& fluid,
+                  const std::vector<unsigned int>& fluid_patches,
+                  const parallel::distributed::Triangulation<dim>& solid,
+                  const std::vector<unsigned int>& solid_patches)
 {
   const fvfsi::FVGeometry<dim> fluid_geometry(fluid), solid_geometry(solid);
-  const fvfsi::InterfaceZone<dim> fluid_zone(fluid_geometry, {fluid_patch}, "fluid"),
-    solid_zone(solid_geometry, {solid_patch}, "solid");
+  const fvfsi::InterfaceZone<dim> fluid_zone(fluid_geometry, fluid_patches, "fluid"),
+    solid_zone(solid_geometry, solid_patches, "solid");
   Transfer r;
 
   // Tractions: fluid faces -> solid faces; compare the total forces.
@@ -156,7 +160,7 @@ void curved_interface(std::ofstream& out, const std::string& name,
     GridGenerator::hyper_ball(solid, Point<dim>(), 0.5);
     fluid.refine_global(finer_solid ? r : r + 1);
     solid.refine_global(finer_solid ? r + 1 : r);
-    const Transfer t = transfer(fluid, 0, solid, 0);
+    const Transfer t = transfer(fluid, {0}, solid, {0});
     std::printf("r %u coverage %.6f %.6f force %.3g u %.3g gap %.3g\n", r, t.min_coverage,
                 t.max_coverage, t.force_difference, t.displacement_error, t.gap);
     if (previous > 0)
@@ -183,7 +187,7 @@ int main(int argc, char** argv)
                                               Point<2>(1, 1), true);
     GridGenerator::subdivided_hyper_rectangle(solid, steps({13, 2}, {1, 0.2}), Point<2>(0, -0.2),
                                               Point<2>(1, 0), true);
-    print_flat(out, "2D flat", transfer(fluid, 2, solid, 3));
+    print_flat(out, "2D flat", transfer(fluid, {2}, solid, {3}));
   }
   {
     // (b) 3D: z_min = id 4, z_max = id 5.
@@ -192,7 +196,7 @@ int main(int argc, char** argv)
                                               Point<3>(1, 1, 1), true);
     GridGenerator::subdivided_hyper_rectangle(solid, steps({3, 7, 2}, {1, 1, 0.2}),
                                               Point<3>(0, 0, -0.2), Point<3>(1, 1, 0), true);
-    print_flat(out, "3D flat", transfer(fluid, 4, solid, 5));
+    print_flat(out, "3D flat", transfer(fluid, {4}, solid, {5}));
   }
   // (c) 2D circle: shell 0.5 < r < 1 (12 cells around; inner boundary id 0) around a disk r < 0.5
   // (4 boundary faces; id 0), the disk one level finer: 12 x 2^r against 8 x 2^r faces.
@@ -200,4 +204,23 @@ int main(int argc, char** argv)
   // (d) 3D sphere: shell 0.5 < r < 1 (12 coarse cells, inner boundary id 0, one level finer)
   // around a ball r < 0.5 (id 0): 48 x 4^r against 24 x 4^r faces.
   curved_interface<3>(out, "3D sphere", {0, 1, 2, 3}, "5e-2", /*finer solid*/ false);
+  {
+    // (e) 2D thin flag 0 < y < 0.02 (4 x 1 cells; colorize: y_min = id 2, y_max = id 3) in the
+    // slot between two fluid boxes of 5 non-uniform columns (their slot faces: id 7).
+    Triangulation<2> lower, upper, both;
+    GridGenerator::subdivided_hyper_rectangle(lower, steps({5, 2}, {1, 0.3}), Point<2>(0, -0.3),
+                                              Point<2>(1, 0));
+    GridGenerator::subdivided_hyper_rectangle(upper, steps({5, 2}, {1, 0.3}), Point<2>(0, 0.02),
+                                              Point<2>(1, 0.32));
+    GridGenerator::merge_triangulations(lower, upper, both);
+    parallel::distributed::Triangulation<2> fluid(comm), solid(comm);
+    fluid.copy_triangulation(both);
+    for (const auto& cell : fluid.cell_iterators())
+      for (const auto& face : cell->face_iterators())
+        if (face->at_boundary() && face->center()[1] > -1e-12 && face->center()[1] < 0.02 + 1e-12)
+          face->set_boundary_id(7);
+    GridGenerator::subdivided_hyper_rectangle(solid, {4, 1}, Point<2>(0, 0), Point<2>(1, 0.02),
+                                              true);
+    print_flat(out, "2D thin flag", transfer(fluid, {7}, solid, {2, 3}));
+  }
 }

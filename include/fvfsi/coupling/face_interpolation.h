@@ -28,9 +28,10 @@ namespace fvfsi
   {
   public:
     /// Weights from the zones' geometry (collective only in that every rank does the same).
-    /// A source face counts for a target face if it faces it (|n_j . n_k| > 0.5) and its centre
-    /// lies within half the target face's size of the target plane. Throws if a target face
-    /// has no source face, naming both zones.
+    /// A source face counts for a target face if it faces it (outward normals against each
+    /// other: n_j . n_k < -0.5, as the fluid's and the solid's are at their common surface) and
+    /// its centre lies within half the target face's size of the target plane. Throws if a
+    /// target face has no source face, naming both zones.
     FaceInterpolation(const InterfaceZone<dim>& source, const InterfaceZone<dim>& target);
 
     /// Eq. 32 for every target face.
@@ -39,6 +40,9 @@ namespace fvfsi
 
     /// sum_k w_jk of target face j (1: fully covered by the source side).
     double coverage(unsigned int j) const;
+    /// The least and the largest coverage(j) over the target faces (1 and 1 where the two sides
+    /// match; a curved surface faceted differently on the two sides: within a few per cent).
+    std::pair<double, double> coverage_range() const;
     /// (source face k, w_jk) of target face j.
     const std::vector<std::pair<unsigned int, double>>& weights(const unsigned int j) const
     {
