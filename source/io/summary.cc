@@ -20,12 +20,25 @@ namespace fvfsi
 
     std::string quoted(const std::string& s)
     {
+      // A JSON string: quotes and backslashes escaped, control characters (a newline in an
+      // error message) as \n, \t or \u00XX, which JSON does not allow raw.
       std::string out = "\"";
       for (const char c : s)
       {
         if (c == '"' || c == '\\')
-          out += '\\';
-        out += c;
+          (out += '\\') += c;
+        else if (c == '\n')
+          out += "\\n";
+        else if (c == '\t')
+          out += "\\t";
+        else if (static_cast<unsigned char>(c) < 0x20)
+        {
+          char buffer[8];
+          std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned int>(c));
+          out += buffer;
+        }
+        else
+          out += c;
       }
       return out + "\"";
     }

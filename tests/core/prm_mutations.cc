@@ -1,7 +1,8 @@
 // Bad input stays a clear error (issue 15, item 6): every shipped .prm file of prm/ is run on
 // mutated copies, and each run must end either normally (exit 0, a summary.json whose numbers are
 // all finite) or with a non-zero exit and a message that names the parameter. Never by a signal,
-// a hang or a non-finite number.
+// a hang or a non-finite number; and a summary.json written, also by a failed run, must parse as
+// JSON (Boost's property_tree parser).
 //
 // Mutations of a `set Key = value` line: the value replaced by nan, its numbers negated, set to
 // zero or to 1e300, the value empty, a value of the wrong type (a word for a number, a number for
@@ -20,6 +21,9 @@
 // line (doc/results/prm_mutations.sh writes that table). The output (counts per file, and any
 // failure) is compared exactly: it holds no computed number.
 #include <fvfsi/app/application.h>
+
+#define BOOST_BIND_GLOBAL_PLACEHOLDERS // Boost 1.74's property_tree still includes boost/bind.hpp
+#include <boost/property_tree/json_parser.hpp>
 
 #include "../test_utilities.h"
 
@@ -274,6 +278,18 @@ namespace
   std::string judge(const Mutation& m, const int code, const std::string& message,
                     const std::string& output, const std::vector<std::string>& parameters)
   {
+    // Whatever the end, a summary.json written must be JSON (a failed run's error message may
+    // span lines: they must arrive escaped).
+    if (fs::exists(output + "/summary.json"))
+      try
+      {
+        boost::property_tree::ptree tree;
+        boost::property_tree::read_json(output + "/summary.json", tree);
+      }
+      catch (const std::exception& e)
+      {
+        return std::string("summary.json is not JSON: ") + e.what();
+      }
     if (code == 0)
     {
       std::ifstream in(output + "/summary.json");
