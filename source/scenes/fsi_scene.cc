@@ -536,6 +536,7 @@ namespace fvfsi
     summary.set_result("max_coupling_iterations_per_step", result.max_coupling_iterations);
     summary.set_result("min_cell_volume_ratio", result.min_volume_ratio);
     summary.set_result("solid_outer_iterations", result.solid_outer_iterations);
+    summary.set_result("solid_least_stretch", solid->least_stretch()); // 1: linear elasticity
     summary.set_result("coupled_wall_seconds", result.coupled_wall_seconds);
     const auto [least, most] = traction_map->coverage_range();
     summary.set_result("interface_coverage_min", least);

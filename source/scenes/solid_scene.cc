@@ -197,6 +197,7 @@ namespace fvfsi
       summary.set_result("point_" + name + "_displacement",
                          std::vector<double>(&u[0], &u[0] + dim));
     summary.set_result("outer_iterations", result.total_outer_iterations);
+    summary.set_result("least_stretch", solid->least_stretch()); // 1: linear elasticity
     if (solid_parameters.algorithm == SolidParameters::Algorithm::coupled)
     {
       // outer_iterations are Newton iterations here

@@ -3,6 +3,7 @@
 // Eqs 23-24, the tractions of the boundary conditions and the residual of Eq. 16 (see
 // solid_solver.h).
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/symmetric_tensor.h>
 
 #include <fvfsi/fv/ghost_faces.h>
 #include <fvfsi/solid/solid_solver.h>
@@ -164,6 +165,22 @@ namespace fvfsi
       return boundary_traction(f, boundary_G[f]);
     const Tensor<1, dim> t = first_piola_traction(face_gradient(f), face.n, lame);
     return type == Type::symmetry ? (t * face.n) * face.n : t;
+  }
+
+  template <int dim>
+  double SolidSolver<dim>::smallest_stretch() const
+  {
+    // The smallest principal stretch, sqrt of the least eigenvalue of C = F^T F with F = I + G^T
+    // (G_ij = d u_j / d x_i; F and G^T share their singular values), over the face gradients
+    // the forces use.
+    double least = std::numeric_limits<double>::max();
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+      if (geometry.faces[f].kind != FaceKind::ghost_boundary)
+      {
+        const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + face_gradient(f);
+        least = std::min(least, eigenvalues(symmetrize(transpose(F) * F))[dim - 1]);
+      }
+    return std::sqrt(Utilities::MPI::min(least, geometry.comm()));
   }
 
   template <int dim>

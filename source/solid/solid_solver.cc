@@ -193,6 +193,7 @@ namespace fvfsi
     if (parameters.algorithm == SolidParameters::Algorithm::coupled)
     {
       solve_coupled();
+      check_stretch();
       return;
     }
     // Outer iterations: the fixed point u = u + A^-1 R(u), accelerated by Anderson mixing.
@@ -213,6 +214,7 @@ namespace fvfsi
       {
         update_gradients();
         last_outer_iterations = k;
+        check_stretch();
         return;
       }
     }
@@ -221,6 +223,29 @@ namespace fvfsi
                              std::to_string(parameters.max_outer_iterations) +
                              " iterations (raise Solid/Max outer iterations, or reduce the load or "
                              "time step)");
+  }
+
+  template <int dim>
+  void SolidSolver<dim>::check_stretch()
+  {
+    // St. Venant-Kirchhoff's stress does not grow without bound in compression: in uniaxial
+    // stress, P = E lambda (lambda^2 - 1) / 2 is least at the stretch lambda = 1/sqrt(3) and
+    // falls again below it. Past that limit point the discrete equations can have more than one
+    // solution; the segregated boundary iteration (Eqs 23-24) has been seen to settle on a
+    // second one at a clamped corner (doc/results/cavity.md). Say so once.
+    if (!lame.nonlinear)
+      return;
+    last_stretch = smallest_stretch();
+    const double limit = 1 / std::sqrt(3.0);
+    if (last_stretch < limit && least_stretch_seen >= limit)
+      pcout << "fvfsi: warning: at " << clock.step_name()
+            << " the solid's smallest principal stretch is " << last_stretch
+            << ", below 1/sqrt(3) = " << limit
+            << " where the St. Venant-Kirchhoff model's stress stops growing with "
+            << "compression: the discrete solution need not be unique there. Compare with "
+            << "Solid/Algorithm = coupled (Newton from the unloaded state), more Solid/Boundary "
+            << "sweeps, or a finer mesh.\n";
+    least_stretch_seen = std::min(least_stretch_seen, last_stretch);
   }
 
   template <int dim>
