@@ -49,6 +49,13 @@ namespace fvfsi
     /// Factorise `matrix` / build the preconditioner (block_size: unknowns per node).
     void initialize(const dealii::TrilinosWrappers::SparseMatrix& matrix, unsigned int block_size);
     bool initialized() const { return matrix != nullptr; }
+    /// Whether solve() is exact (a direct factorisation), so that two solves with the same
+    /// right-hand side give the same x.
+    bool direct_method() const
+    {
+      return parameters.method == JacobianSolverParameters::Method::klu ||
+             parameters.method == JacobianSolverParameters::Method::umfpack;
+    }
 
     /// matrix x = b (x: start value for GMRES). Returns the Krylov iterations (0: direct).
     /// `reduction` >= 0 replaces the parameters' Residual reduction for this solve. Throws a
