@@ -229,23 +229,22 @@ namespace fvfsi
   void SolidSolver<dim>::check_stretch()
   {
     // St. Venant-Kirchhoff's stress does not grow without bound in compression: in uniaxial
-    // stress, P = E lambda (lambda^2 - 1) / 2 is least at the stretch lambda = 1/sqrt(3) and
-    // falls again below it. Past that limit point the discrete equations can have more than one
-    // solution; the segregated boundary iteration (Eqs 23-24) has been seen to settle on a
-    // second one at a clamped corner (doc/results/cavity.md). Say so once.
+    // stress, P = E lambda (lambda^2 - 1) / 2 is most compressive at the stretch lambda =
+    // 1/sqrt(3) and shrinks again below it. Past that limit point the discrete equations can
+    // have more than one solution; the segregated boundary iteration (Eqs 23-24) has been seen to
+    // settle on a second one at a clamped corner (doc/results/cavity.md). Say so once.
     if (!lame.nonlinear)
       return;
-    last_stretch = smallest_stretch();
-    const double limit = 1 / std::sqrt(3.0);
-    if (last_stretch < limit && least_stretch_seen >= limit)
+    const double stretch = smallest_stretch(), limit = 1 / std::sqrt(3.0);
+    if (stretch < limit && least_stretch_seen >= limit)
       pcout << "fvfsi: warning: at " << clock.step_name()
-            << " the solid's smallest principal stretch is " << last_stretch
+            << " the solid's smallest principal stretch is " << stretch
             << ", below 1/sqrt(3) = " << limit
-            << " where the St. Venant-Kirchhoff model's stress stops growing with "
-            << "compression: the discrete solution need not be unique there. Compare with "
-            << "Solid/Algorithm = coupled (Newton from the unloaded state), more Solid/Boundary "
-            << "sweeps, or a finer mesh.\n";
-    least_stretch_seen = std::min(least_stretch_seen, last_stretch);
+            << " where the St. Venant-Kirchhoff model's compressive stress is largest: "
+            << "past it the discrete solution need not be unique. Compare with "
+            << "Solid/Algorithm = coupled (Newton from the unloaded state) or more "
+            << "Solid/Boundary sweeps.\n";
+    least_stretch_seen = std::min(least_stretch_seen, stretch);
   }
 
   template <int dim>

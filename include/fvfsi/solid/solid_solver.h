@@ -91,10 +91,9 @@ namespace fvfsi
 
     const LameParameters& material() const { return lame; }
 
-    /// The smallest principal stretch of the face gradients at the end of the last solve
-    /// (St. Venant-Kirchhoff; 1 for the linear model), and the least over all solves so far.
-    /// Below 1/sqrt(3) (solid_solver.cc) the model is past its limit point in compression.
-    double last_smallest_stretch() const { return last_stretch; }
+    /// The smallest principal stretch of the face gradients at the end of any solve so far (St.
+    /// Venant-Kirchhoff; 1 for the linear model). Below 1/sqrt(3) (solid_solver.cc) the model is
+    /// past its limit point in compression.
     double least_stretch() const { return least_stretch_seen; }
 
     /// u at the cell centres [m] (ghost values up to date).
@@ -206,7 +205,7 @@ namespace fvfsi
     double jacobian_mass_coefficient = -1; ///< c0^2 of the linear-elastic Jacobian, -1: none
     std::array<CellVector, dim> coupled_cell_residual;
     unsigned long n_jacobians = 0, n_residuals = 0, n_krylov = 0;
-    double last_stretch = 1, least_stretch_seen = 1;
+    double least_stretch_seen = 1;
     /// smallest_stretch() after a solve; a warning the first time it is below 1/sqrt(3).
     void check_stretch();
     double smallest_stretch() const;
