@@ -47,7 +47,7 @@ namespace
   /// Turek-Hron channels of up to 47 160 cells and the elastic tube: FSI3 41 s, FSI2 18 s, the
   /// tube 37 s, CFD3 11 s of the 152 s for all files) run on coarse meshes (the channel and flag
   /// of tests/coupling/fsi3_coarse, the tube refined once): these --set overrides, each left out
-  /// when its own line is the mutated one. On the tube refined once (faces of about 2 mm) the
+  /// when its own line is the mutated one. On the tube refined once (faces of about 2 x 4 mm) the
   /// outer surface of the 1 mm wall lies within FaceInterpolation's reach of the fluid's
   /// interface; its mutation `interface elsewhere` asserts that it is refused all the same (it
   /// faces the same way as the fluid's interface).

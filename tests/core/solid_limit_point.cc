@@ -13,9 +13,9 @@
 #include <fvfsi/scenes/solid_scene.h>
 
 #include "../test_utilities.h"
+#include "solid_fields.h"
 
 #include <filesystem>
-#include <map>
 
 using namespace fvfsi_test;
 
@@ -23,7 +23,7 @@ namespace
 {
   struct Plate
   {
-    std::map<std::array<double, 2>, std::array<double, 2>> u; // by centroid (rank 0: all)
+    SolidField u;
     double least_stretch;
   };
 
@@ -43,29 +43,13 @@ namespace
     fvfsi::SolidScene<2> scene(p->mesh, p->solid, p->solid_scene, p->time, MPI_COMM_WORLD, ".",
                                "out");
     scene.run();
-    std::vector<std::pair<std::array<double, 2>, std::array<double, 2>>> local;
-    const auto& fv = scene.geometry();
-    for (unsigned int c = 0; c < fv.n_owned_cells(); ++c)
-      local.push_back({{fv.centroid[c][0], fv.centroid[c][1]},
-                       {scene.solver().displacement()[c][0], scene.solver().displacement()[c][1]}});
-    Plate plate{{}, scene.solver().least_stretch()};
-    for (const auto& part : dealii::Utilities::MPI::gather(MPI_COMM_WORLD, local))
-      for (const auto& [x, u] : part)
-        plate.u[x] = u;
-    return plate;
+    return {displacement_by_centroid(scene), scene.solver().least_stretch()};
   }
 
-  /// max |u_a - u_b| / max |u_b| over the cells.
   double difference(const Plate& a, const Plate& b)
   {
-    double max_u = 0, max_difference = 0;
-    for (const auto& [x, u] : b.u)
-    {
-      const auto& v = a.u.at(x);
-      max_u = std::max({max_u, std::abs(u[0]), std::abs(u[1])});
-      max_difference = std::max({max_difference, std::abs(u[0] - v[0]), std::abs(u[1] - v[1])});
-    }
-    return max_difference / max_u;
+    bool matched = false;
+    return max_relative_difference(a.u, b.u, matched);
   }
 } // namespace
 
