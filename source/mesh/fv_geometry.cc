@@ -145,6 +145,12 @@ namespace fvfsi
           all_boundary_face_list.push_back(faces.size());
         faces.push_back(face);
       }
+    std::vector<std::vector<std::pair<unsigned int, unsigned int>>> cell_boundary_faces(
+      cells.size());
+    for (const unsigned int f : all_boundary_face_list)
+      cell_boundary_faces[faces[f].P].emplace_back(faces[f].face_no, f);
+    boundary_exchange.reinit(*cell_partitioner, GeometryInfo<dim>::faces_per_cell,
+                             cell_boundary_faces);
   }
 
   template <int dim>

@@ -15,6 +15,8 @@
 //    are those of the deal.II face; S_f = area n_f with |n_f| = 1; d_fn > 0 on every face; in 2D
 //    r_f is the segment midpoint and n_f is normal to the segment;
 //  - ghost cells' centroids and volumes, computed on this rank, are bitwise their owner's;
+//  - the boundary-face exchange gives every ghost_boundary face its owner's values (a face's
+//    identity and its r_f), and leaves none out;
 //  - FVGeometry::reinit() after moving the vertices of the distorted box by x -> A x + t (the
 //    triangulation untouched, as in a moving-mesh run) gives V_P -> det A V_P and r_P -> A r_P + t
 //    (the decomposition about vertex averages is affine-covariant) and passes all checks above;
@@ -130,6 +132,28 @@ void check_geometry(std::ostream& out, const parallel::distributed::Triangulatio
       ghost_faces_ok =
         ghost_faces_ok && fv.faces[f].P == c && fv.faces[f].kind == fvfsi::FaceKind::ghost_boundary;
   check(out, "ghost cells list only their ghost_boundary faces", ghost_faces_ok);
+
+  // The boundary-face exchange: every ghost_boundary face receives what the owner of its cell
+  // stored on the same face - here the face's identity (global cell index, face number) as a
+  // scalar and, as a tensor of dim doubles, the owner's r_f, which is bitwise this rank's own.
+  {
+    std::vector<double> id(fv.faces.size(), -1);
+    std::vector<Tensor<1, dim>> centre(fv.faces.size());
+    for (const unsigned int f : fv.boundary_faces())
+    {
+      id[f] = fv.global_index(fv.faces[f].P) * 2 * dim + fv.faces[f].face_no;
+      centre[f] = fv.faces[f].centre;
+    }
+    fv.boundary_face_exchange().update(id);
+    fv.boundary_face_exchange().update(centre);
+    bool received = true;
+    for (const unsigned int f : fv.all_boundary_faces())
+      received = received &&
+                 id[f] == double(fv.global_index(fv.faces[f].P) * 2 * dim + fv.faces[f].face_no) &&
+                 centre[f] == fv.faces[f].centre;
+    check(out, "ghost_boundary faces receive their owner's face values (boundary face exchange)",
+          received);
+  }
 
   // Per face.
   bool kinds_ok = true, vertices_ok = true, neighbours_ok = true, patches_ok = true;

@@ -15,6 +15,8 @@
 #include <deal.II/fe/fe_dgq.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <fvfsi/mesh/boundary_face_exchange.h>
+
 #include <array>
 #include <memory>
 #include <vector>
@@ -138,6 +140,8 @@ namespace fvfsi
     const std::vector<unsigned int>& boundary_faces() const { return boundary_face_list; }
     /// The faces of kinds `boundary` and `ghost_boundary`.
     const std::vector<unsigned int>& all_boundary_faces() const { return all_boundary_face_list; }
+    /// Copies per-face values of boundary faces to the ghost_boundary faces of the neighbours.
+    const BoundaryFaceExchange& boundary_face_exchange() const { return boundary_exchange; }
 
     std::vector<dealii::Point<dim>> centroid; ///< r_P [m]
     std::vector<double> cell_volume;          ///< V_P [m^dim] (area in 2D: true 2D, unit depth)
@@ -161,6 +165,7 @@ namespace fvfsi
       cell_vertex_indices;
     std::vector<std::vector<unsigned int>> faces_of_cell;
     std::vector<unsigned int> boundary_face_list, all_boundary_face_list;
+    BoundaryFaceExchange boundary_exchange;
     /// Per cell and face: the face's vertices, counter-clockwise about the outward normal.
     std::vector<std::array<std::array<unsigned int, dealii::GeometryInfo<dim>::vertices_per_face>,
                            dealii::GeometryInfo<dim>::faces_per_cell>>
