@@ -87,13 +87,14 @@ namespace fvfsi
       initialize(matrix);
     if (reduction < 0)
       reduction = parameters.reduction;
-    if (!std::isfinite(b.l2_norm()) || !std::isfinite(x.l2_norm()))
+    const double b_norm = b.l2_norm(), x_norm = x.l2_norm();
+    if (!std::isfinite(b_norm) || !std::isfinite(x_norm))
       throw std::runtime_error("linear solve of " + what +
                                ": the right-hand side or the start value is not finite (NaN or "
                                "inf): the solution diverged before this solve");
     const unsigned int iterations = parameters.method == LinearSolverParameters::Method::cg
-                                      ? solve_cg(matrix, x, b, what, reduction)
-                                      : solve_gmres(matrix, x, b, what, reduction);
+                                      ? solve_cg(matrix, x, b, b_norm, x_norm, what, reduction)
+                                      : solve_gmres(matrix, x, b, b_norm, x_norm, what, reduction);
     ++solve_count;
     iteration_count += iterations;
     if (fresh_iterations < 0) // the first solve with this preconditioner (the retry's, if any)
@@ -140,8 +141,8 @@ namespace fvfsi
   }
 
   unsigned int LinearSolver::solve_cg(const TrilinosWrappers::SparseMatrix& matrix, CellVector& x,
-                                      const CellVector& b, const std::string& what,
-                                      const double reduction)
+                                      const CellVector& b, const double b_norm, const double x_norm,
+                                      const std::string& what, const double reduction)
   {
     // Stop at `reduction` times the initial residual (ReductionControl takes the solver's first
     // residual) or times |b| (Reduction relative to = right-hand side: a fixed target however
@@ -151,7 +152,6 @@ namespace fvfsi
     // the matrix changes a little between rebuilds. On the pressure of the Turek-Hron CFD3 run
     // (20 960 cells, about 5 CG iterations per solve) this path takes 2.37 instead of AztecOO's
     // 3.20 ms per solve, with the same iterations (doc/results/performance.md).
-    const double b_norm = b.l2_norm(), x_norm = x.l2_norm();
     const double round_off = 1e-13 * std::max(b_norm, x_norm == 0 ? 0.0 : matrix_norm * x_norm);
     const double floor = std::max(parameters.absolute_tolerance, round_off);
     ReductionControl reduction_control(iteration_limit(), floor, reduction, false, false);
@@ -173,8 +173,9 @@ namespace fvfsi
   }
 
   unsigned int LinearSolver::solve_gmres(const TrilinosWrappers::SparseMatrix& matrix,
-                                         CellVector& x, const CellVector& b,
-                                         const std::string& what, const double reduction)
+                                         CellVector& x, const CellVector& b, const double b_norm,
+                                         const double x_norm, const std::string& what,
+                                         const double reduction)
   {
     // Owned entries of a CellVector and of an owned-only Trilinos vector share their local order.
     const unsigned int n = x.locally_owned_size();
@@ -190,16 +191,14 @@ namespace fvfsi
     // The stopping rule of solve_cg(), from an explicit initial residual.
     TrilinosWrappers::MPI::Vector r(b_trilinos);
     const double r0 = matrix.residual(r, x_trilinos, b_trilinos);
-    const double x_norm = x_trilinos.l2_norm(); // |A| (a pass over the matrix) only if x != 0
-    const double round_off =
-      1e-13 * std::max(b_trilinos.l2_norm(), x_norm == 0 ? 0.0 : matrix.linfty_norm() * x_norm);
+    const double round_off = 1e-13 * std::max(b_norm, x_norm == 0 ? 0.0 : matrix_norm * x_norm);
     SolverControl control(
       parameters.max_iterations,
       std::max({parameters.absolute_tolerance, round_off,
                 reduction * (parameters.reduction_reference ==
                                  LinearSolverParameters::ReductionReference::initial_residual
                                ? r0
-                               : b_trilinos.l2_norm())}),
+                               : b_norm)}),
       false, false);
     failed_iterations = 0;
     if (r0 <= control.tolerance())

@@ -70,11 +70,15 @@ namespace fvfsi
     /// CG by deal.II's SolverCG on the cell vectors themselves (the Trilinos matrix and
     /// preconditioner take LinearAlgebra::distributed::Vector): no copies into Epetra vectors,
     /// no AztecOO set-up and no separate initial residual per solve.
+    /// `b_norm`, `x_norm`: |b| and |x| of the start, computed once per solve (each is a meeting
+    /// of all ranks).
     unsigned int solve_cg(const dealii::TrilinosWrappers::SparseMatrix& matrix, CellVector& x,
-                          const CellVector& b, const std::string& what, double reduction);
+                          const CellVector& b, double b_norm, double x_norm,
+                          const std::string& what, double reduction);
     /// GMRES by AztecOO, on copies of x and b.
     unsigned int solve_gmres(const dealii::TrilinosWrappers::SparseMatrix& matrix, CellVector& x,
-                             const CellVector& b, const std::string& what, double reduction);
+                             const CellVector& b, double b_norm, double x_norm,
+                             const std::string& what, double reduction);
     /// Run `attempt`; if it fails, rebuild the preconditioner for `matrix`, call `restart` and
     /// try once more (see linear_solver.cc). Returns the iterations of the failed attempt.
     template <typename Attempt, typename Restart>
