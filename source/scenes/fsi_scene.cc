@@ -571,6 +571,18 @@ namespace fvfsi
     }
     for (const auto& [section, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
       summary.set_timing(section, seconds);
+    for (const auto& [name, solver] :
+         {std::pair{"fluid_pressure", &fluid->pressure_linear_solver()},
+          std::pair{"fluid_momentum", &fluid->momentum_linear_solver()}})
+    {
+      summary.set_result(std::string(name) + "_linear_solves", double(solver->n_solves()));
+      summary.set_result(std::string(name) + "_iterations_per_solve",
+                         solver->n_iterations() / std::max(1.0, double(solver->n_solves())));
+    }
+    // The fluid's own sections (pressure solve, momentum solve, ...) inside "fluid".
+    for (const auto& [section, seconds] :
+         fluid->timer().get_summary_data(TimerOutput::total_wall_time))
+      summary.set_timing("fluid: " + section, seconds);
   }
 
   template class FsiScene<2>;

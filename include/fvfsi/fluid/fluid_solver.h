@@ -186,6 +186,7 @@ namespace fvfsi
     void checkpoint(MeshArchive<dim>& archive);
     /// The pressure's linear solver (for its solve and iteration counts).
     const LinearSolver& pressure_linear_solver() const { return pressure_solver; }
+    const LinearSolver& momentum_linear_solver() const { return momentum_solver; }
     /// Wall time per part of the algorithm, for the run's log.
     dealii::TimerOutput& timer() { return timer_output; }
 
