@@ -34,6 +34,8 @@ namespace fvfsi
     std::shared_ptr<const dealii::Utilities::MPI::Partitioner> partitioner;
     std::vector<unsigned int> send_faces; ///< local faces in the partitioner's import order
     std::vector<unsigned int> recv_faces; ///< local faces in the partitioner's ghost order
+    /// Message buffers, kept between updates (the solid updates in every boundary sweep).
+    mutable std::vector<double> send, receive;
   };
 
   template <typename T>
@@ -44,7 +46,8 @@ namespace fvfsi
       return;
     constexpr unsigned int n = sizeof(T) / sizeof(double);
     constexpr int tag = 5113; // only these messages, each received before update() returns
-    std::vector<double> send(send_faces.size() * n), receive(recv_faces.size() * n);
+    send.resize(send_faces.size() * n);
+    receive.resize(recv_faces.size() * n);
     for (unsigned int k = 0; k < send_faces.size(); ++k)
       std::memcpy(&send[k * n], &values[send_faces[k]], sizeof(T));
     const MPI_Comm comm = partitioner->get_mpi_communicator();
