@@ -1,6 +1,6 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/solver_gmres.h>
 
 #include <fvfsi/base/selection.h>
 #include <fvfsi/fv/linear_solver.h>
@@ -20,8 +20,13 @@ namespace fvfsi
     add_selection(prm, "Preconditioner", preconditioner,
                   {{"AMG", Preconditioner::amg},
                    {"ILU", Preconditioner::ilu},
-                   {"Jacobi", Preconditioner::jacobi}},
-                  "AMG (Trilinos ML, one V-cycle), ILU (Trilinos Ifpack ILU(0)) or Jacobi.");
+                   {"Jacobi", Preconditioner::jacobi},
+                   {"direct", Preconditioner::direct}},
+                  "AMG (Trilinos ML, one V-cycle), ILU (Trilinos Ifpack ILU(0)), Jacobi, or "
+                  "direct: the whole matrix gathered and factorised (UMFPACK) on every rank, so "
+                  "that a solve takes one iteration and no rank waits for another; for small "
+                  "systems solved often (the segregated solid), where ML's AMG would be one "
+                  "coarse level solved on rank 0 alone (up to 2000 rows).");
     prm.add_parameter("Residual reduction", reduction,
                       "Stop when the residual has fallen by this factor (per linear solve).",
                       Patterns::Double(0, 1));
@@ -44,7 +49,10 @@ namespace fvfsi
 
   void LinearSolver::initialize(const TrilinosWrappers::SparseMatrix& matrix)
   {
-    if (parameters.preconditioner == LinearSolverParameters::Preconditioner::amg)
+    preconditioner.reset();
+    if (parameters.preconditioner == LinearSolverParameters::Preconditioner::direct)
+      direct.factorize(matrix, GatheredDirectSolver::Where::every_rank);
+    else if (parameters.preconditioner == LinearSolverParameters::Preconditioner::amg)
     {
       auto amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
@@ -67,8 +75,6 @@ namespace fvfsi
       jacobi->initialize(matrix);
       preconditioner = std::move(jacobi);
     }
-    x_trilinos.reinit(matrix.locally_owned_domain_indices(), matrix.get_mpi_communicator());
-    b_trilinos.reinit(x_trilinos);
     matrix_norm = matrix.linfty_norm();
     fresh_iterations = -1;
   }
@@ -83,7 +89,7 @@ namespace fvfsi
   unsigned int LinearSolver::solve(const TrilinosWrappers::SparseMatrix& matrix, CellVector& x,
                                    const CellVector& b, const std::string& what, double reduction)
   {
-    if (!preconditioner)
+    if (!initialized())
       initialize(matrix);
     if (reduction < 0)
       reduction = parameters.reduction;
@@ -92,9 +98,7 @@ namespace fvfsi
       throw std::runtime_error("linear solve of " + what +
                                ": the right-hand side or the start value is not finite (NaN or "
                                "inf): the solution diverged before this solve");
-    const unsigned int iterations = parameters.method == LinearSolverParameters::Method::cg
-                                      ? solve_cg(matrix, x, b, b_norm, x_norm, what, reduction)
-                                      : solve_gmres(matrix, x, b, b_norm, x_norm, what, reduction);
+    const unsigned int iterations = solve_krylov(matrix, x, b, b_norm, x_norm, what, reduction);
     ++solve_count;
     iteration_count += iterations;
     if (fresh_iterations < 0) // the first solve with this preconditioner (the retry's, if any)
@@ -140,18 +144,17 @@ namespace fvfsi
     }
   }
 
-  unsigned int LinearSolver::solve_cg(const TrilinosWrappers::SparseMatrix& matrix, CellVector& x,
-                                      const CellVector& b, const double b_norm, const double x_norm,
-                                      const std::string& what, const double reduction)
+  unsigned int LinearSolver::solve_krylov(const TrilinosWrappers::SparseMatrix& matrix,
+                                          CellVector& x, const CellVector& b, const double b_norm,
+                                          const double x_norm, const std::string& what,
+                                          const double reduction)
   {
     // Stop at `reduction` times the initial residual (ReductionControl takes the solver's first
     // residual) or times |b| (Reduction relative to = right-hand side: a fixed target however
-    // close the warm start is), or at the absolute tolerance; never ask for less than round-off of b or of A x
-    // (Krylov methods stall there, and preconditioned CG started from round-off noise can break
-    // down into NaN). |A| is that of the matrix the preconditioner was built for: an estimate,
-    // the matrix changes a little between rebuilds. On the pressure of the Turek-Hron CFD3 run
-    // (20 960 cells, about 5 CG iterations per solve) this path takes 2.37 instead of AztecOO's
-    // 3.20 ms per solve, with the same iterations (doc/results/performance.md).
+    // close the warm start is), or at the absolute tolerance; never ask for less than round-off
+    // of b or of A x (Krylov methods stall there, and preconditioned CG started from round-off
+    // noise can break down into NaN). |A| is that of the matrix the preconditioner was built for:
+    // an estimate, the matrix changes a little between rebuilds.
     const double round_off = 1e-13 * std::max(b_norm, x_norm == 0 ? 0.0 : matrix_norm * x_norm);
     const double floor = std::max(parameters.absolute_tolerance, round_off);
     ReductionControl reduction_control(iteration_limit(), floor, reduction, false, false);
@@ -160,60 +163,35 @@ namespace fvfsi
       parameters.reduction_reference == LinearSolverParameters::ReductionReference::initial_residual
         ? reduction_control
         : rhs_control;
+    // deal.II's solvers on the cell vectors themselves: no copies into Epetra vectors and no
+    // AztecOO set-up per solve. On the pressure of the Turek-Hron CFD3 run (20 960 cells, about 5
+    // CG iterations per solve) CG takes 2.37 instead of AztecOO's 3.20 ms per solve, with the same
+    // iterations; GMRES with right preconditioning watches the true residual b - A x like CG
+    // (doc/results/performance.md, sections 4 and 8).
+    const auto krylov_with = [&](const auto& M) // M: the preconditioner
+    {
+      if (parameters.method == LinearSolverParameters::Method::cg)
+        SolverCG<CellVector>(control).solve(matrix, x, b, M);
+      else
+      {
+        const typename SolverGMRES<CellVector>::AdditionalData restart_after_30(30, true);
+        SolverGMRES<CellVector>(control, restart_after_30).solve(matrix, x, b, M);
+      }
+    };
+    const auto krylov = [&]()
+    {
+      if (parameters.preconditioner == LinearSolverParameters::Preconditioner::direct)
+        krylov_with(direct);
+      else
+        krylov_with(*preconditioner);
+    };
     x.zero_out_ghost_values(); // the solver writes the owned entries only
     const CellVector x_start(x);
-    const unsigned int failed = with_one_retry(
-      matrix, control, what,
-      [&]() { SolverCG<CellVector>(control).solve(matrix, x, b, *preconditioner); },
-      [&]() { x = x_start; });
+    const unsigned int failed =
+      with_one_retry(matrix, control, what, krylov, [&]() { x = x_start; });
     failed_iterations = failed;
     x.update_ghost_values();
     return failed +
            (control.last_step() == numbers::invalid_unsigned_int ? 0 : control.last_step());
-  }
-
-  unsigned int LinearSolver::solve_gmres(const TrilinosWrappers::SparseMatrix& matrix,
-                                         CellVector& x, const CellVector& b, const double b_norm,
-                                         const double x_norm, const std::string& what,
-                                         const double reduction)
-  {
-    // Owned entries of a CellVector and of an owned-only Trilinos vector share their local order.
-    const unsigned int n = x.locally_owned_size();
-    const auto copy_in = [&]()
-    {
-      for (unsigned int i = 0; i < n; ++i)
-      {
-        x_trilinos.trilinos_vector()[0][i] = x.local_element(i);
-        b_trilinos.trilinos_vector()[0][i] = b.local_element(i);
-      }
-    };
-    copy_in();
-    // The stopping rule of solve_cg(), from an explicit initial residual.
-    TrilinosWrappers::MPI::Vector r(b_trilinos);
-    const double r0 = matrix.residual(r, x_trilinos, b_trilinos);
-    const double round_off = 1e-13 * std::max(b_norm, x_norm == 0 ? 0.0 : matrix_norm * x_norm);
-    SolverControl control(
-      parameters.max_iterations,
-      std::max({parameters.absolute_tolerance, round_off,
-                reduction * (parameters.reduction_reference ==
-                                 LinearSolverParameters::ReductionReference::initial_residual
-                               ? r0
-                               : b_norm)}),
-      false, false);
-    failed_iterations = 0;
-    if (r0 <= control.tolerance())
-      return 0;
-    const unsigned int failed = with_one_retry(
-      matrix, control, what,
-      [&]() {
-        TrilinosWrappers::SolverGMRES(control).solve(matrix, x_trilinos, b_trilinos,
-                                                     *preconditioner);
-      },
-      copy_in);
-    failed_iterations = failed;
-    for (unsigned int i = 0; i < n; ++i)
-      x.local_element(i) = x_trilinos.trilinos_vector()[0][i];
-    x.update_ghost_values();
-    return failed + control.last_step();
   }
 } // namespace fvfsi

@@ -141,6 +141,24 @@ namespace fvfsi
   }
 
   template <int dim>
+  unsigned long SolidSolver<dim>::linear_solves() const
+  {
+    unsigned long n = 0;
+    for (const auto& solver : linear_solver)
+      n += solver ? solver->n_solves() : 0;
+    return n;
+  }
+
+  template <int dim>
+  unsigned long SolidSolver<dim>::linear_iterations() const
+  {
+    unsigned long n = 0;
+    for (const auto& solver : linear_solver)
+      n += solver ? solver->n_iterations() : 0;
+    return n;
+  }
+
+  template <int dim>
   void SolidSolver<dim>::shift_time_levels()
   {
     // v^[m-1] from the step just finished (BDF2 or, after the first step, backward Euler):

@@ -4,23 +4,34 @@
 // clamped + traction boundaries), also with Solid/Hessian correction (which plate_hole.prm sets
 // too), agrees with a run on rank 0 alone to 1e-8 relative
 // (max |u_np - u_1| / max |u_1|). Outer iterations converge to 1e-12 in both runs, so what is
-// left is round-off and partition-dependent AMG/Anderson differences.
+// left is round-off and partition-dependent AMG/Anderson differences. (c) The flag of (b) with
+// Solid linear solver/Preconditioner = direct (the whole matrix A_j factorised on every rank):
+// the same agreement, and every linear solve takes at most one Krylov iteration on any number of
+// ranks (the preconditioner is the exact inverse of A_j, which changes only with the time step
+// size), at least one in all.
 #include <fvfsi/scenes/solid_scene.h>
 
 #include "../test_utilities.h"
 
+#include <cstdlib>
 #include <filesystem>
+#include <iostream>
 #include <map>
 
 using namespace fvfsi_test;
 
 using Values = std::vector<std::pair<std::array<double, 2>, std::array<double, 2>>>;
 
+/// Linear solves and their Krylov iterations of the last run() (the solid's A_j systems).
+unsigned long n_solves = 0, n_iterations = 0;
+
 Values run(const fvfsi::AllParameters& p, MPI_Comm comm)
 {
   std::filesystem::create_directories("out");
   fvfsi::SolidScene<2> scene(p.mesh, p.solid, p.solid_scene, p.time, comm, ".", "out");
   scene.run();
+  n_solves = scene.solver().linear_solves();
+  n_iterations = scene.solver().linear_iterations();
   Values values;
   const auto& fv = scene.geometry();
   for (unsigned int c = 0; c < fv.n_owned_cells(); ++c)
@@ -29,11 +40,14 @@ Values run(const fvfsi::AllParameters& p, MPI_Comm comm)
   return values;
 }
 
-void compare(std::ofstream& out, const std::string& title, const fvfsi::AllParameters& p)
+/// Returns the linear solves and iterations of the run on all ranks (on rank 0).
+std::pair<unsigned long, unsigned long> compare(std::ofstream& out, const std::string& title,
+                                                const fvfsi::AllParameters& p)
 {
   const auto gathered = dealii::Utilities::MPI::gather(MPI_COMM_WORLD, run(p, MPI_COMM_WORLD));
+  const std::pair<unsigned long, unsigned long> counts{n_solves, n_iterations};
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
-    return;
+    return counts;
   std::map<std::array<double, 2>, std::array<double, 2>> reference;
   double max_u = 0;
   for (const auto& [x, u] : run(p, MPI_COMM_SELF))
@@ -54,6 +68,7 @@ void compare(std::ofstream& out, const std::string& title, const fvfsi::AllParam
   out << title << ": " << reference.size()
       << " cells, all matched: " << yes_no(matched == reference.size())
       << ", max |u_np - u_1| / max |u_1| < 1e-8: " << yes_no(max_difference / max_u < 1e-8) << "\n";
+  return counts;
 }
 
 int main(int argc, char** argv)
@@ -70,4 +85,18 @@ int main(int argc, char** argv)
                         {"Mesh/Generator arguments=70: 4", "Solid/Transient=true",
                          "Time/Time step=0.01", "Time/End time=0.05", "Solid/Outer tolerance=1e-12",
                          "Solid/Hessian correction=true"}));
+  const auto [solves, iterations] =
+    compare(out, "Turek-Hron flag, 5 BDF2 steps, direct preconditioner",
+            *shipped_case("turek_hron_csm1", {"Mesh/Generator arguments=70: 4",
+                                              "Solid/Transient=true", "Time/Time step=0.01",
+                                              "Time/End time=0.05", "Solid/Outer tolerance=1e-12",
+                                              "Solid linear solver/Preconditioner=direct"}));
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+    return 0;
+  const bool one_rank_solves = n_iterations <= n_solves && n_iterations > 0; // rank 0 alone
+  out << "direct preconditioner: at most one iteration per linear solve, on all ranks and on one: "
+      << yes_no(iterations <= solves && iterations > 0 && one_rank_solves) << "\n";
+  if (std::getenv("FVFSI_TEST_VERBOSE") != nullptr)
+    std::cerr << "  [direct: " << solves << " solves, " << iterations << " iterations; one rank "
+              << n_solves << ", " << n_iterations << "]" << std::endl;
 }

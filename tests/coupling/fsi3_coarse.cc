@@ -9,13 +9,20 @@
 //       stops at time step 1 with an error that names the step and points to Coupling/Start time;
 //   (b) recorded values at t = 0.04 s of the run of (c) (deterministic to 1e-9): drag, lift,
 //       u(A) with 6 (u_y(A): 5) significant digits, which numdiff's default -r 1e-8 then checks
-//       to the printed digits; and the total coupling iterations of the run with the shipped
-//       solver settings on one rank within 10% of the recorded 83 (measured 83 since every
-//       coupling iteration restarts the fluid from the step's gradients too; 90 before, commit
-//       2c25e28). With np = 2 the shipped run is repeated on rank 0 alone for this count: where a
-//       step's residual crosses the tolerance 1e-5 depends on the partition at the level of the
-//       solver tolerances, and IQN-ILS builds on those iterates (np = 2 measured 97 since the
-//       gradients are restored, 113 at 8084015 and 2c25e28: printed, not asserted);
+//       to the printed digits; the total coupling iterations of the tightly converged run of
+//       (c) on rank 0 alone within 10% of the recorded 124 (the coupling's own convergence, free
+//       of the linear solvers' noise: 124 both before and after the momentum GMRES moved from
+//       AztecOO to deal.II's SolverGMRES); and those of the run with the shipped solver
+//       settings on one rank within 10% of the recorded 93. The shipped count is where each
+//       step's residual crosses the tolerance 1e-5 with the momentum solved to only 1e-3, and
+//       IQN-ILS builds on those iterates: it moves with any change of the linear solvers at the
+//       level of their tolerances. Measured, Fluid momentum solver/Residual reduction 5e-4, 1e-3,
+//       2e-3, 1e-4, 1e-6: with AztecOO's GMRES (19539d6) 83, 83, 114, 95, 91; with deal.II's
+//       (1e-3, 1e-6, 2e-6, 5e-7): 93, 106, 96, 106: the same scatter, so the recorded value was
+//       moved from 83 to 93 with that change (doc/results/performance.md, section 8); the check
+//       is a tripwire that makes such a change look at the count. With np = 2 the shipped run is
+//       repeated on rank 0 alone for this count (np = 2 measured 97 at 19539d6: printed, not
+//       asserted);
 //   (d) a fluid probe P (Fluid scene/Probes, behind the flag's tip) in fsi_history.txt: its
 //       velocity and pressure every step (the mesh it is found in moves with the flag), printed at
 //       t = 0.04 s of the run of (c) with 6 significant digits;
@@ -136,8 +143,12 @@ int main(int argc, char** argv)
                   last[0], last[7], last[8], last[9])
         << "\n";
   }
-  out << "shipped settings, one rank: total coupling iterations within 10% of 83 (recorded): "
-      << yes_no(std::abs(double(iterations) - 83) <= 8.3) << "\n";
+  const unsigned int tight_iterations = total_iterations(h1);
+  std::printf("tight run, one rank: %u coupling iterations\n", tight_iterations);
+  out << "tight run, one rank: total coupling iterations within 10% of 124 (recorded): "
+      << yes_no(std::abs(double(tight_iterations) - 124) <= 12.4) << "\n";
+  out << "shipped settings, one rank: total coupling iterations within 10% of 93 (recorded): "
+      << yes_no(std::abs(double(iterations) - 93) <= 9.3) << "\n";
 
   // (c) the force (drag, lift) and u(A) as vectors, each against its largest magnitude.
   bool equal = hn.size() == 20 && h1.size() == 20;

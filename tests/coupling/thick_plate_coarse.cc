@@ -11,8 +11,11 @@
 //       0.01463 m (this mesh: -14%; the shipped meshes -1%), every cell keeps more than half of
 //       its volume (measured 0.89);
 //   (c) np ranks equal one rank: every solve converged far below 1e-8 (linear solvers 1e-12,
-//       the steady fluid and the solid's outer iterations to 1e-12, the coupling to 1e-11),
-//       u(A) and the force within 1e-8 of their magnitudes.
+//       the steady fluid to 1e-11, the solid's outer iterations to 1e-12, the coupling to 1e-11),
+//       u(A) and the force within 1e-8 of their magnitudes (measured with np = 2: 1.8e-10 and
+//       8e-12). The steady fluid's 1e-12 of earlier lay at its round-off: with the momentum
+//       GMRES of deal.II the relative change of the np = 2 run oscillated between 1e-12 and
+//       4e-12 and the fluid stopped with "no progress".
 // With np = 1 (c) compares two identical runs. Verdicts and 6-digit values of the tight run only,
 // so that NAME.output and NAME.mpirun=2.output are the same file.
 #include "fsi_case.h"
@@ -31,7 +34,7 @@ const std::vector<std::string> tight = {"Fluid momentum solver/Residual reductio
                                         "Fluid pressure solver/Residual reduction=1e-12",
                                         "Mesh motion solver/Residual reduction=1e-12",
                                         "Solid linear solver/Residual reduction=1e-12",
-                                        "Fluid/Steady tolerance=1e-12",
+                                        "Fluid/Steady tolerance=1e-11",
                                         "Solid/Outer tolerance=1e-12",
                                         "Coupling/Tolerance=1e-11"};
 

@@ -11,10 +11,11 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <fvfsi/fv/gathered_direct_solver.h>
 
 #include <memory>
 #include <string>
@@ -63,16 +64,11 @@ namespace fvfsi
     unsigned int solve(Vector& x, const Vector& b, const std::string& what, double reduction = -1);
 
   private:
-    /// UMFPACK: the matrix gathered and factorised on rank 0.
-    void factorize_on_root(const dealii::TrilinosWrappers::SparseMatrix& matrix);
-    /// UMFPACK: b gathered on rank 0, solved there, x sent back.
-    void solve_on_root(Vector& x, const Vector& b) const;
-
     JacobianSolverParameters parameters;
     const dealii::TrilinosWrappers::SparseMatrix* matrix = nullptr;
     dealii::SolverControl direct_control;
     std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> direct;
-    std::unique_ptr<dealii::SparseDirectUMFPACK> umfpack;
+    std::unique_ptr<GatheredDirectSolver> umfpack; ///< on rank 0
     std::unique_ptr<dealii::TrilinosWrappers::PreconditionBase> preconditioner;
   };
 } // namespace fvfsi

@@ -1,6 +1,7 @@
 #pragma once
-// Krylov solve of an assembled FV system (Trilinos matrix): CG by deal.II's SolverCG directly on
-// the cell vectors, GMRES by AztecOO; Trilinos ML AMG, Ifpack ILU or Jacobi preconditioners.
+// Krylov solve of an assembled FV system (Trilinos matrix): deal.II's SolverCG or SolverGMRES
+// directly on the cell vectors; Trilinos ML AMG, Ifpack ILU or Jacobi preconditioners, or an exact
+// one (a factorisation of the whole matrix on every rank) for small systems.
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/solver_control.h>
@@ -8,6 +9,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fvfsi/fv/gathered_direct_solver.h>
 #include <fvfsi/mesh/fv_geometry.h>
 
 #include <memory>
@@ -24,9 +26,10 @@ namespace fvfsi
     };
     enum class Preconditioner
     {
-      amg,   ///< Trilinos ML algebraic multigrid, one V-cycle
-      ilu,   ///< Trilinos Ifpack ILU(0)
-      jacobi ///< diagonal scaling
+      amg,    ///< Trilinos ML algebraic multigrid, one V-cycle
+      ilu,    ///< Trilinos Ifpack ILU(0)
+      jacobi, ///< diagonal scaling
+      direct  ///< the whole matrix factorised on every rank (UMFPACK): small systems
     };
     /// What Residual reduction is relative to.
     enum class ReductionReference
@@ -62,23 +65,19 @@ namespace fvfsi
 
     /// Number of solve() calls and their Krylov iterations so far.
     /// Whether initialize() has built a preconditioner (a restarted run has none yet).
-    bool initialized() const { return preconditioner != nullptr; }
+    bool initialized() const { return preconditioner != nullptr || direct.initialized(); }
     unsigned long n_solves() const { return solve_count; }
     unsigned long n_iterations() const { return iteration_count; }
 
   private:
-    /// CG by deal.II's SolverCG on the cell vectors themselves (the Trilinos matrix and
-    /// preconditioner take LinearAlgebra::distributed::Vector): no copies into Epetra vectors,
-    /// no AztecOO set-up and no separate initial residual per solve.
-    /// `b_norm`, `x_norm`: |b| and |x| of the start, computed once per solve (each is a meeting
-    /// of all ranks).
-    unsigned int solve_cg(const dealii::TrilinosWrappers::SparseMatrix& matrix, CellVector& x,
-                          const CellVector& b, double b_norm, double x_norm,
-                          const std::string& what, double reduction);
-    /// GMRES by AztecOO, on copies of x and b.
-    unsigned int solve_gmres(const dealii::TrilinosWrappers::SparseMatrix& matrix, CellVector& x,
-                             const CellVector& b, double b_norm, double x_norm,
-                             const std::string& what, double reduction);
+    /// CG or GMRES (right-preconditioned, restarted after 30 iterations) by deal.II's solvers
+    /// directly on the cell vectors (the Trilinos matrix and preconditioner take
+    /// LinearAlgebra::distributed::Vector): no copies into Epetra vectors, no AztecOO set-up and
+    /// no separate initial residual per solve. `b_norm`, `x_norm`: |b| and |x| of the start,
+    /// computed once per solve (each is a meeting of all ranks).
+    unsigned int solve_krylov(const dealii::TrilinosWrappers::SparseMatrix& matrix, CellVector& x,
+                              const CellVector& b, double b_norm, double x_norm,
+                              const std::string& what, double reduction);
     /// Run `attempt`; if it fails, rebuild the preconditioner for `matrix`, call `restart` and
     /// try once more (see linear_solver.cc). Returns the iterations of the failed attempt.
     template <typename Attempt, typename Restart>
@@ -88,8 +87,8 @@ namespace fvfsi
 
     LinearSolverParameters parameters;
     std::unique_ptr<dealii::TrilinosWrappers::PreconditionBase> preconditioner;
-    dealii::TrilinosWrappers::MPI::Vector x_trilinos, b_trilinos;
-    double matrix_norm = 0; ///< |A|_inf of the matrix of the last initialize()
+    GatheredDirectSolver direct; ///< Preconditioner = direct
+    double matrix_norm = 0;      ///< |A|_inf of the matrix of the last initialize()
     unsigned long solve_count = 0, iteration_count = 0;
     /// Iterations of the first solve after initialize() (-1: none yet). A later solve that needs
     /// ten times as many (at least 50) has outlived its preconditioner: it stops there and is

@@ -88,6 +88,10 @@ namespace fvfsi
     unsigned long residual_evaluations() const { return n_residuals; }
     /// ... and GMRES iterations of the Newton systems so far.
     unsigned long krylov_iterations() const { return n_krylov; }
+    /// Solid/Algorithm = segregated: the linear solves of the component systems A_j so far and
+    /// their Krylov iterations (0 and 0 for the coupled algorithm).
+    unsigned long linear_solves() const;
+    unsigned long linear_iterations() const;
 
     const LameParameters& material() const { return lame; }
 
