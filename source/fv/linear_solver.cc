@@ -24,9 +24,9 @@ namespace fvfsi
                    {"direct", Preconditioner::direct}},
                   "AMG (Trilinos ML, one V-cycle), ILU (Trilinos Ifpack ILU(0)), Jacobi, or "
                   "direct: the whole matrix gathered and factorised (UMFPACK) on every rank, so "
-                  "that a solve takes one iteration and no rank waits for another; for small "
-                  "systems solved often (the segregated solid), where ML's AMG would be one "
-                  "coarse level solved on rank 0 alone (up to 2000 rows).");
+                  "that a solve takes one iteration and no rank waits for another (small "
+                  "systems only: every rank holds the whole factorisation; on the shipped FSI3's "
+                  "738-cell solid it is slower than AMG, doc/results/performance.md).");
     prm.add_parameter("Residual reduction", reduction,
                       "Stop when the residual has fallen by this factor (per linear solve).",
                       Patterns::Double(0, 1));

@@ -579,9 +579,10 @@ namespace fvfsi
       summary.set_result(std::string(name) + "_iterations_per_solve",
                          solver->n_iterations() / std::max(1.0, double(solver->n_solves())));
     }
-    summary.set_result("solid_linear_solves", double(solid->linear_solves()));
+    const auto [solid_solves, solid_iterations] = solid->linear_solves_and_iterations();
+    summary.set_result("solid_linear_solves", double(solid_solves));
     summary.set_result("solid_iterations_per_solve",
-                       solid->linear_iterations() / std::max(1.0, double(solid->linear_solves())));
+                       solid_iterations / std::max(1.0, double(solid_solves)));
     // The fluid's own sections (pressure solve, momentum solve, ...) inside "fluid".
     for (const auto& [section, seconds] :
          fluid->timer().get_summary_data(TimerOutput::total_wall_time))

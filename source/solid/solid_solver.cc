@@ -141,20 +141,15 @@ namespace fvfsi
   }
 
   template <int dim>
-  unsigned long SolidSolver<dim>::linear_solves() const
+  std::pair<unsigned long, unsigned long> SolidSolver<dim>::linear_solves_and_iterations() const
   {
-    unsigned long n = 0;
+    std::pair<unsigned long, unsigned long> n{0, 0};
     for (const auto& solver : linear_solver)
-      n += solver ? solver->n_solves() : 0;
-    return n;
-  }
-
-  template <int dim>
-  unsigned long SolidSolver<dim>::linear_iterations() const
-  {
-    unsigned long n = 0;
-    for (const auto& solver : linear_solver)
-      n += solver ? solver->n_iterations() : 0;
+      if (solver)
+      {
+        n.first += solver->n_solves();
+        n.second += solver->n_iterations();
+      }
     return n;
   }
 

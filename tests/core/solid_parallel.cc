@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <tuple>
 
 using namespace fvfsi_test;
 
@@ -30,8 +31,7 @@ Values run(const fvfsi::AllParameters& p, MPI_Comm comm)
   std::filesystem::create_directories("out");
   fvfsi::SolidScene<2> scene(p.mesh, p.solid, p.solid_scene, p.time, comm, ".", "out");
   scene.run();
-  n_solves = scene.solver().linear_solves();
-  n_iterations = scene.solver().linear_iterations();
+  std::tie(n_solves, n_iterations) = scene.solver().linear_solves_and_iterations();
   Values values;
   const auto& fv = scene.geometry();
   for (unsigned int c = 0; c < fv.n_owned_cells(); ++c)

@@ -4,10 +4,9 @@
 //
 // On rank 0 alone, every solve gathers b there and sends x back: the other ranks wait while rank
 // 0 solves. On every rank, each rank holds the whole factorisation and solves the whole system
-// itself: one all-gather of b per solve and nobody waits. That pays for small systems used often,
-// e.g. the segregated solid's component systems (a few hundred to a few thousand rows, one solve
-// per outer iteration), where an AMG preconditioner would be a single coarse level, i.e. the
-// same direct solve on rank 0 (Trilinos ML: KLU for up to 2000 rows).
+// itself: one all-gather of b per solve and nobody waits. Meant for small systems used often;
+// for the segregated solid of the shipped FSI3 (738 cells) it did not pay against ML's AMG: 12-19%
+// dearer on one rank, no cheaper on two (doc/results/performance.md, section 8).
 
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/sparse_direct.h>

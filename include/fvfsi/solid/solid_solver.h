@@ -56,6 +56,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace fvfsi
@@ -89,9 +90,8 @@ namespace fvfsi
     /// ... and GMRES iterations of the Newton systems so far.
     unsigned long krylov_iterations() const { return n_krylov; }
     /// Solid/Algorithm = segregated: the linear solves of the component systems A_j so far and
-    /// their Krylov iterations (0 and 0 for the coupled algorithm).
-    unsigned long linear_solves() const;
-    unsigned long linear_iterations() const;
+    /// their Krylov iterations ({0, 0} for the coupled algorithm).
+    std::pair<unsigned long, unsigned long> linear_solves_and_iterations() const;
 
     const LameParameters& material() const { return lame; }
 
