@@ -44,6 +44,12 @@ for np in (1, 2):
     print("| %d | %s | %.2f | %.2f | %d |" % (np, ", ".join(map(str, t[np][2])), t[np][0], t[np][1], t[np][3]))
 print("speed-up (coupled steps) %.2f, efficiency %.0f%%; whole run: %.2f, %.0f%%" % (
     t[1][0] / t[2][0], 50 * t[1][0] / t[2][0], t[1][1] / t[2][1], 50 * t[1][1] / t[2][1]))
+# Each round's one- and two-rank runs follow each other within two minutes; their ratio is less
+# exposed to the machine's drift (whole runs 20-30% apart within minutes) than the medians are.
+pairs = sorted(50 * a / b for a, b in zip(t[1][2], t[2][2]))
+q = statistics.quantiles(pairs, n=4) if len(pairs) > 1 else pairs * 3
+print("efficiency of the %d pairs: median %.0f%%, quartiles %.0f%% - %.0f%%, range %.0f%% - %.0f%%" % (
+    len(pairs), statistics.median(pairs), q[0], q[-1], pairs[0], pairs[-1]))
 
 # The sections of the median run of each rank count.
 import matplotlib

@@ -5,6 +5,9 @@
 
 #include <fvfsi/fv/gathered_direct_solver.h>
 
+#include <cmath>
+#include <stdexcept>
+
 #include <Epetra_CrsMatrix.h>
 
 #include <stdexcept>
@@ -85,7 +88,7 @@ namespace fvfsi
     whole.reinit(A.m());
   }
 
-  void GatheredDirectSolver::solve(Vector& x, const Vector& b) const
+  void GatheredDirectSolver::solve(Vector& x, const Vector& b, const bool with_ghosts) const
   {
     if (counts.empty())
       throw std::logic_error("GatheredDirectSolver::solve() before factorize()");
@@ -107,5 +110,25 @@ namespace fvfsi
                    MPI_DOUBLE, 0, comm);
     else
       std::copy(whole.begin() + offsets[rank], whole.begin() + offsets[rank] + n_owned, x.begin());
+    if (where == Where::rank_0 && counts.size() > 1)
+    {
+      if (with_ghosts)
+        x.update_ghost_values();
+      return;
+    }
+    for (const double value : whole)
+      if (!std::isfinite(value))
+        throw std::runtime_error("the direct solve gave a solution that is not finite (NaN or "
+                                 "inf): the right-hand side or the matrix is not finite");
+    if (with_ghosts)
+    {
+      // The ghost entries follow the owned ones in x's local storage, in the order of the
+      // partitioner's ghost indices; every rank holds the whole solution.
+      const IndexSet& ghosts = x.get_partitioner()->ghost_indices();
+      unsigned int k = n_owned;
+      for (const auto i : ghosts)
+        x.local_element(k++) = whole[i];
+      x.set_ghost_state(true);
+    }
   }
 } // namespace fvfsi

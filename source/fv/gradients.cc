@@ -47,7 +47,7 @@ namespace fvfsi
 
   template <int dim>
   void GaussGreenGradient<dim>::compute(const std::vector<double>& vertex_values,
-                                        CellGradient<dim>& gradient) const
+                                        CellGradient<dim>& gradient, const bool with_ghosts) const
   {
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
     {
@@ -56,7 +56,8 @@ namespace fvfsi
         g += coefficient[i] * vertex_values[vertex[i]];
       gradient.set(c, g);
     }
-    gradient.update_ghost_values();
+    if (with_ghosts)
+      gradient.update_ghost_values();
   }
 
   namespace

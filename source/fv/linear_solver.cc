@@ -17,16 +17,17 @@ namespace fvfsi
     prm.enter_subsection(name);
     add_selection(prm, "Method", method, {{"CG", Method::cg}, {"GMRES", Method::gmres}},
                   "Krylov method: CG for symmetric matrices, GMRES otherwise.");
-    add_selection(prm, "Preconditioner", preconditioner,
-                  {{"AMG", Preconditioner::amg},
-                   {"ILU", Preconditioner::ilu},
-                   {"Jacobi", Preconditioner::jacobi},
-                   {"direct", Preconditioner::direct}},
-                  "AMG (Trilinos ML, one V-cycle), ILU (Trilinos Ifpack ILU(0)), Jacobi, or "
-                  "direct: the whole matrix gathered and factorised (UMFPACK) on every rank, so "
-                  "that a solve takes one iteration and no rank waits for another (small "
-                  "systems only: every rank holds the whole factorisation; on the shipped FSI3's "
-                  "738-cell solid it is slower than AMG, doc/results/performance.md).");
+    add_selection(
+      prm, "Preconditioner", preconditioner,
+      {{"AMG", Preconditioner::amg},
+       {"ILU", Preconditioner::ilu},
+       {"Jacobi", Preconditioner::jacobi},
+       {"direct", Preconditioner::direct}},
+      "AMG (Trilinos ML, one V-cycle), ILU (Trilinos Ifpack ILU(0)), Jacobi, or "
+      "direct: the whole matrix gathered and factorised (UMFPACK) on every rank, so "
+      "that a solve is exact without Krylov iterations and the ranks meet once per solve (small "
+      "systems only: every rank holds the whole factorisation; on the shipped FSI3's "
+      "738-cell solid it is slower than AMG, doc/results/performance.md).");
     prm.add_parameter("Residual reduction", reduction,
                       "Stop when the residual has fallen by this factor (per linear solve).",
                       Patterns::Double(0, 1));
@@ -91,6 +92,8 @@ namespace fvfsi
   {
     if (!initialized())
       initialize(matrix);
+    if (parameters.preconditioner == LinearSolverParameters::Preconditioner::direct)
+      return solve_directly(x, b, what);
     if (reduction < 0)
       reduction = parameters.reduction;
     const double b_norm = b.l2_norm(), x_norm = x.l2_norm();
@@ -104,6 +107,28 @@ namespace fvfsi
     if (fresh_iterations < 0) // the first solve with this preconditioner (the retry's, if any)
       fresh_iterations = int(iterations - failed_iterations);
     return iterations;
+  }
+
+  unsigned int LinearSolver::solve_directly(CellVector& x, const CellVector& b,
+                                            const std::string& what)
+  {
+    // The factorisation is exact: no Krylov iteration, and with a copy of it on every rank the
+    // ranks meet once per solve (the all-gather of b); x's ghosts are read from the whole
+    // solution every rank holds.
+    x.zero_out_ghost_values();
+    try
+    {
+      direct.solve(x, b, /*with_ghosts=*/true);
+    }
+    catch (const std::exception& e)
+    {
+      throw std::runtime_error("linear solve of " + what + ": " + e.what());
+    }
+    ++solve_count;
+    ++iteration_count;
+    if (fresh_iterations < 0)
+      fresh_iterations = 1;
+    return 1;
   }
 
   template <typename Attempt, typename Restart>
@@ -168,22 +193,15 @@ namespace fvfsi
     // CG iterations per solve) CG takes 2.37 instead of AztecOO's 3.20 ms per solve, with the same
     // iterations; GMRES with right preconditioning watches the true residual b - A x like CG
     // (doc/results/performance.md, sections 4 and 8).
-    const auto krylov_with = [&](const auto& M) // M: the preconditioner
+    const auto krylov = [&]()
     {
       if (parameters.method == LinearSolverParameters::Method::cg)
-        SolverCG<CellVector>(control).solve(matrix, x, b, M);
+        SolverCG<CellVector>(control).solve(matrix, x, b, *preconditioner);
       else
       {
         const typename SolverGMRES<CellVector>::AdditionalData restart_after_30(30, true);
-        SolverGMRES<CellVector>(control, restart_after_30).solve(matrix, x, b, M);
+        SolverGMRES<CellVector>(control, restart_after_30).solve(matrix, x, b, *preconditioner);
       }
-    };
-    const auto krylov = [&]()
-    {
-      if (parameters.preconditioner == LinearSolverParameters::Preconditioner::direct)
-        krylov_with(direct);
-      else
-        krylov_with(*preconditioner);
     };
     x.zero_out_ghost_values(); // the solver writes the owned entries only
     const CellVector x_start(x);

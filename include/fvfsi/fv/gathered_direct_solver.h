@@ -5,8 +5,9 @@
 // On rank 0 alone, every solve gathers b there and sends x back: the other ranks wait while rank
 // 0 solves. On every rank, each rank holds the whole factorisation and solves the whole system
 // itself: one all-gather of b per solve and nobody waits. Meant for small systems used often;
-// for the segregated solid of the shipped FSI3 (738 cells) it did not pay against ML's AMG: 12-19%
-// dearer on one rank, no cheaper on two (doc/results/performance.md, section 8).
+// for the segregated solid of the shipped FSI3 (738 cells) it did not pay against ML's AMG (one CG
+// iteration per solve there too): 7-9% dearer on one and on two ranks, even as the
+// whole linear solve without CG around it (doc/results/performance.md, section 8).
 
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/sparse_direct.h>
@@ -32,11 +33,11 @@ namespace fvfsi
     /// contiguous range of rows (true of deal.II's cell numbering).
     void factorize(const dealii::TrilinosWrappers::SparseMatrix& matrix, Where where);
 
-    /// x = A^-1 b for the A of factorize() (x's and b's owned entries; ghosts not updated).
-    void solve(Vector& x, const Vector& b) const;
-
-    /// The same as solve(): an exact preconditioner for deal.II's Krylov solvers.
-    void vmult(Vector& x, const Vector& b) const { solve(x, b); }
+    /// x = A^-1 b for the A of factorize() (x's and b's owned entries). With `with_ghosts`, x's
+    /// ghost entries too: on every rank they are read from the whole solution (no exchange), on
+    /// rank 0 they are exchanged. On every rank a solution that is not finite throws the same
+    /// std::runtime_error on all ranks (they hold the same whole system).
+    void solve(Vector& x, const Vector& b, bool with_ghosts = false) const;
 
     bool initialized() const { return umfpack != nullptr; }
 

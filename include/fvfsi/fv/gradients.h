@@ -23,8 +23,10 @@ namespace fvfsi
     explicit GaussGreenGradient(const FVGeometry<dim>& geometry);
     /// Recompute the coefficients; call after FVGeometry::reinit().
     void reinit();
-    /// Fills the owned cells and updates the ghosts.
-    void compute(const std::vector<double>& vertex_values, CellGradient<dim>& gradient) const;
+    /// Fills the owned cells and, `with_ghosts`, updates the ghosts (an exchange between ranks:
+    /// skip it where only owned cells' gradients are read, e.g. the solid's boundary sweeps).
+    void compute(const std::vector<double>& vertex_values, CellGradient<dim>& gradient,
+                 bool with_ghosts = true) const;
 
   private:
     const FVGeometry<dim>& geometry;

@@ -78,6 +78,9 @@ namespace fvfsi
     unsigned int solve_krylov(const dealii::TrilinosWrappers::SparseMatrix& matrix, CellVector& x,
                               const CellVector& b, double b_norm, double x_norm,
                               const std::string& what, double reduction);
+    /// Preconditioner = direct: x = A^-1 b by the factorisation alone (counted as one
+    /// iteration), x's ghosts included.
+    unsigned int solve_directly(CellVector& x, const CellVector& b, const std::string& what);
     /// Run `attempt`; if it fails, rebuild the preconditioner for `matrix`, call `restart` and
     /// try once more (see linear_solver.cc). Returns the iterations of the failed attempt.
     template <typename Attempt, typename Restart>

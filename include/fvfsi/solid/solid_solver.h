@@ -153,7 +153,9 @@ namespace fvfsi
     /// the traction is too large for the boundary condition's iteration (Eq. 24). "" otherwise.
     std::string divergence_hint() const;
     void update_gradients();
-    void update_cell_gradients();
+    /// `with_ghosts = false`: the present variant's gradients of owned cells only (the boundary
+    /// sweeps read no other); the other variants always update the ghosts.
+    void update_cell_gradients(bool with_ghosts = true);
     dealii::Tensor<2, dim> tangential_part(unsigned int f) const;
     void update_boundary_values();
     void find_constrained_vertices();
