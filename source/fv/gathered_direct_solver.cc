@@ -6,7 +6,6 @@
 #include <fvfsi/fv/gathered_direct_solver.h>
 
 #include <cmath>
-#include <stdexcept>
 
 #include <Epetra_CrsMatrix.h>
 
@@ -110,7 +109,7 @@ namespace fvfsi
                    MPI_DOUBLE, 0, comm);
     else
       std::copy(whole.begin() + offsets[rank], whole.begin() + offsets[rank] + n_owned, x.begin());
-    if (where == Where::rank_0 && counts.size() > 1)
+    if (where == Where::rank_0) // only rank 0 holds the whole solution: nothing to check here
     {
       if (with_ghosts)
         x.update_ghost_values();
