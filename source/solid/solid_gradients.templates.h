@@ -19,8 +19,8 @@ namespace fvfsi
     if (cell_hessian)
       update_hessians();
     // A sweep reads the gradients of owned cells only (the extrapolation to their boundary
-    // faces): the neighbours' copies (ghosts) are exchanged after the last sweep alone, which on
-    // two ranks takes 2 dim exchanges out of every sweep.
+    // faces): the neighbours' copies (ghosts) are exchanged after the last sweep alone, which
+    // takes dim^2 exchanges (one per component of each grad u_j) out of every other sweep.
     for (unsigned int sweep = 0; sweep < parameters.boundary_sweeps; ++sweep)
     {
       update_boundary_values();
@@ -32,7 +32,8 @@ namespace fvfsi
   void SolidSolver<dim>::update_cell_gradients(const bool with_ghosts)
   {
     // From u and the boundary values u_b (and the Hessians' terms): the vertex values (present
-    // variant) and the cell gradients, ghosts included.
+    // variant) and the cell gradients; their ghosts too unless `with_ghosts` is false (present
+    // variant only).
     FaceVector boundary_values(geometry.faces.size()); // only boundary entries are read
     for (unsigned int j = 0; j < dim; ++j)
     {
