@@ -8,6 +8,16 @@
 # (the seconds of each TimerOutput section on 1 and 2 ranks, median runs). Needs two free cores;
 # a completed run in RUN_DIRECTORY is not run again. Arguments after REPEATS go to every run (e.g.
 # --set "Solid/Algorithm=coupled").
+#
+# The two cores of a VM need not run at the same speed: on the AMD EPYC VM of performance.md one
+# of them ran the same one-rank work 19% slower than the other for minutes on end, then 2-5%. A
+# two-rank run waits for its slower rank at every meeting, so each round also runs the one-rank
+# case on the second core (`taskset -c 1`; `mpirun -np 1` binds to the first, as mpirun -np 2
+# binds rank 0 to the first and rank 1 to the second). Per round: T1 = the faster of the two
+# one-rank runs (the best serial time), E = T1 / (2 T2), the ceiling C = T1 / (the slower one):
+# what a perfectly balanced code without communication would reach on the two cores as they ran
+# then, and E / C. The one-rank runs on the two cores follow each other, so C also holds the
+# drift between runs two minutes apart; two_copies.sh runs the two cores at the same moment.
 #   usage: doc/results/fsi_parallel.sh [path/to/fvfsi [RUN_DIRECTORY [REPEATS [--set KEY=VALUE ...]]]]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -21,10 +31,12 @@ echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -
 set_args=(--set "Coupling/Start time=0.0075" --set "Time/End time=0.0825"
           --set "Fluid scene/Output interval=0" "$@")
 for r in $(seq 1 "$repeats"); do
-  for np in 1 2; do
+  for np in 1 2 core1; do
     out=$runs/np${np}_$r
     [[ -f $out/summary.json ]] && grep -q '"completed"' "$out/summary.json" && continue
-    mpirun --oversubscribe -np "$np" "$fvfsi" prm/turek_hron_fsi3.prm "${set_args[@]}" \
+    launch=(mpirun --oversubscribe -np "$np")
+    [[ $np == core1 ]] && launch=(taskset -c 1)
+    "${launch[@]}" "$fvfsi" prm/turek_hron_fsi3.prm "${set_args[@]}" \
       --set "Output directory=$out" > "$out.log" 2>&1
   done
 done
@@ -50,6 +62,20 @@ pairs = sorted(50 * a / b for a, b in zip(t[1][2], t[2][2]))
 q = statistics.quantiles(pairs, n=4) if len(pairs) > 1 else pairs * 3
 print("efficiency of the %d pairs: median %.0f%%, quartiles %.0f%% - %.0f%%, range %.0f%% - %.0f%%" % (
     len(pairs), statistics.median(pairs), q[0], q[-1], pairs[0], pairs[-1]))
+
+# Each round against the two cores' speeds in that round.
+T = lambda name, r: json.load(open("%s/%s_%d/summary.json" % (runs, name, r)))["results"]["coupled_wall_seconds"]
+def spread(x):
+    q = statistics.quantiles(x, n=4) if len(x) > 1 else x * 3
+    return "median %.0f%% (quartiles %.0f-%.0f%%)" % (100 * statistics.median(x), 100 * q[0], 100 * q[-1])
+print("| round | T1 core 0 [s] | T1 core 1 [s] | T2 [s] | E = T1/(2 T2) | C = T1/T1(slower core) | E/C |")
+print("|---|---|---|---|---|---|---|")
+E, C, R = [], [], []
+for r in range(1, repeats + 1):
+    a, b, t2 = T("np1", r), T("npcore1", r), T("np2", r)
+    E.append(min(a, b) / (2 * t2)); C.append(min(a, b) / max(a, b)); R.append(max(a, b) / (2 * t2))
+    print("| %d | %.2f | %.2f | %.2f | %.0f%% | %.2f | %.0f%% |" % (r, a, b, t2, 100 * E[-1], C[-1], 100 * R[-1]))
+print("E: %s; C: %s; E/C: %s" % (spread(E), spread(C), spread(R)))
 
 # The sections of the median run of each rank count.
 import matplotlib
