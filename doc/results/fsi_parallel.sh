@@ -60,7 +60,7 @@ print("speed-up (coupled steps) %.2f, efficiency %.0f%%; whole run: %.2f, %.0f%%
 # exposed to the machine's drift (whole runs 20-30% apart within minutes) than the medians are.
 pairs = sorted(50 * a / b for a, b in zip(t[1][2], t[2][2]))
 q = statistics.quantiles(pairs, n=4) if len(pairs) > 1 else pairs * 3
-print("efficiency of the %d pairs: median %.0f%%, quartiles %.0f%% - %.0f%%, range %.0f%% - %.0f%%" % (
+print("efficiency of the %d pairs (T1 on core 0): median %.0f%%, quartiles %.0f%% - %.0f%%, range %.0f%% - %.0f%%" % (
     len(pairs), statistics.median(pairs), q[0], q[-1], pairs[0], pairs[-1]))
 
 # Each round against the two cores' speeds in that round.
