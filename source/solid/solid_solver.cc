@@ -50,12 +50,25 @@ namespace fvfsi
     boundary_u.assign(geometry.faces.size(), Tensor<1, dim>());
     boundary_G.assign(geometry.faces.size(), Tensor<2, dim>());
     external_traction.assign(geometry.faces.size(), Tensor<1, dim>());
-    for (auto* x : {&f, &g, &f_previous, &g_previous})
+    // The outer iteration's work vectors, made once on the cells' partitioner and never given
+    // ghost values. deal.II's distributed vectors exchange ghost values after a copy from a
+    // vector whose ghosts are set and after every operation on a vector whose own ghosts are
+    // set, and a copy into a vector made on another partitioner object makes the ranks agree
+    // on the layout (an MPI min): made per iteration and copied as whole vectors, these took
+    // some 40 meetings of the ranks per outer iteration that carried nothing
+    // (doc/results/performance.md, section 8). Copies from u and du take the owned entries
+    // only (copy_locally_owned_data_from).
+    for (auto* x : {&f, &g, &f_previous, &g_previous, &correction})
     {
       x->reinit(dim);
       for (unsigned int j = 0; j < dim; ++j)
         x->block(j).reinit(geometry.partitioner());
       x->collect_sizes();
+    }
+    for (unsigned int j = 0; j < dim; ++j)
+    {
+      residual[j].reinit(geometry.partitioner());
+      du[j].reinit(geometry.partitioner());
     }
     for (unsigned int j = 0; j < dim; ++j)
     {
@@ -264,16 +277,11 @@ namespace fvfsi
   double SolidSolver<dim>::outer_iteration(const unsigned int k)
   {
     update_gradients();
-    std::array<CellVector, dim> residual, du;
-    for (unsigned int j = 0; j < dim; ++j)
-    {
-      residual[j] = geometry.make_cell_vector();
-      du[j] = geometry.make_cell_vector();
-    }
     compute_residual(residual);
     for (unsigned int j = 0; j < dim; ++j)
       try
       {
+        du[j] = 0; // the linear solve's start value
         linear_solver[j]->solve(matrix[j], du[j], residual[j],
                                 "solid displacement component " + std::to_string(j));
       }
@@ -286,8 +294,8 @@ namespace fvfsi
     // least-squares correction of the model built from the last iterations' differences.
     for (unsigned int j = 0; j < dim; ++j)
     {
-      f.block(j) = du[j];
-      g.block(j) = u.components[j];
+      f.block(j).copy_locally_owned_data_from(du[j]);
+      g.block(j).copy_locally_owned_data_from(u.components[j]);
       g.block(j) += du[j];
     }
     const double max_du = f.linfty_norm();
@@ -303,15 +311,12 @@ namespace fvfsi
       }
       f_previous = f;
       g_previous = g;
-      BlockVector correction(f);
       if (acceleration.correction(f, correction))
         g += correction;
     }
     for (unsigned int j = 0; j < dim; ++j)
-    {
-      u.components[j] = g.block(j);
-      u.components[j].update_ghost_values();
-    }
+      u.components[j].copy_locally_owned_data_from(g.block(j));
+    u.update_ghost_values();
     const double max_u = g.linfty_norm();
     if (!std::isfinite(max_u) || !std::isfinite(max_du))
       return std::numeric_limits<double>::quiet_NaN();

@@ -45,11 +45,15 @@ namespace fvfsi
       for (unsigned int i = 0; i < n_components; ++i)
         components[i].local_element(cell) = v[Value::unrolled_to_component_indices(i)];
     }
-    /// Copy the owners' values into the ghost entries (collective).
+    /// Copy the owners' values into the ghost entries (collective). The components' messages
+    /// are all sent before any is waited for (one communication channel per component), so
+    /// that the waits of the components overlap instead of following each other.
     void update_ghost_values() const
     {
+      for (unsigned int i = 0; i < n_components; ++i)
+        components[i].update_ghost_values_start(i);
       for (const auto& c : components)
-        c.update_ghost_values();
+        c.update_ghost_values_finish();
     }
 
     std::array<CellVector, n_components> components;

@@ -29,10 +29,11 @@
 #include <deal.II/lac/qr.h>
 #include <deal.II/lac/vector.h>
 
-#include <boost/serialization/deque.hpp>
+#include <boost/serialization/list.hpp>
 
 #include <cmath>
-#include <deque>
+#include <iterator>
+#include <list>
 #include <stdexcept>
 #include <vector>
 
@@ -98,20 +99,30 @@ namespace fvfsi
     explicit LeastSquaresModel(const double filter = 0) : filter(filter) {}
     void set_filter(const double f) { filter = f; }
 
-    /// Add the newest pair of columns; `tag` marks them (e.g. with their time step).
+    /// Add the newest pair of columns; `tag` marks them (e.g. with their time step). The
+    /// storage of a forgotten column is reused: a distributed vector made anew takes a meeting of
+    /// the ranks (its copy agrees on the layout with an MPI min), a reused one is filled in place.
     void add_column(const VectorType& dR, const VectorType& dX, const unsigned int tag = 0)
     {
-      columns.push_front({dR, dX, tag});
+      if (spare.empty())
+        columns.push_front(Columns{dR, dX, tag});
+      else
+      {
+        columns.splice(columns.begin(), spare, spare.begin());
+        columns.front().dR = dR;
+        columns.front().dX = dX;
+        columns.front().tag = tag;
+      }
     }
     /// Forget the oldest column pair.
-    void drop_oldest() { columns.pop_back(); }
+    void drop_oldest() { spare.splice(spare.begin(), columns, std::prev(columns.end())); }
     /// Forget the columns tagged below `tag`.
     void drop_tagged_before(const unsigned int tag)
     {
       while (!columns.empty() && columns.back().tag < tag)
-        columns.pop_back();
+        drop_oldest();
     }
-    void clear() { columns.clear(); }
+    void clear() { spare.splice(spare.begin(), columns); }
     unsigned int size() const { return columns.size(); }
     /// The tag of the oldest column (size() > 0).
     unsigned int oldest_tag() const { return columns.back().tag; }
@@ -243,15 +254,17 @@ namespace fvfsi
         [filter2](const dealii::Vector<double>&, const double& rho2, const double& norm2)
         { return rho2 > filter2 * norm2 && rho2 > 0; });
       std::vector<const Columns*> kept;
-      for (unsigned int k = 0; k < columns.size(); ++k)
+      unsigned int k = 0;
+      for (auto column = columns.begin(); column != columns.end(); ++column, ++k)
         if (G(k, k) > 0 && qr.append_column(internal::GramColumn{&G, k}))
-          kept.push_back(&columns[k]);
+          kept.push_back(&*column);
       used = kept.size();
       return kept;
     }
 
     double filter;
-    std::deque<Columns> columns;
+    std::list<Columns> columns; ///< newest first
+    std::list<Columns> spare;   ///< forgotten columns, their storage kept for reuse
     mutable unsigned int used = 0;
   };
 } // namespace fvfsi

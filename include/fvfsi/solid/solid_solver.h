@@ -243,7 +243,9 @@ namespace fvfsi
     /// Anderson acceleration of the outer iterations: the least-squares model of the residual
     /// f = du over the iterates' images g = u + du (depth: Solid/Outer acceleration depth).
     LeastSquaresModel<BlockVector> acceleration;
-    BlockVector f, g, f_previous, g_previous;
+    BlockVector f, g, f_previous, g_previous, correction;
+    /// The outer iteration's R(u) and du per component, allocated once.
+    std::array<CellVector, dim> residual, du;
 
     // State: u and its history for BDF2 (u^[m-1], u^[m-2], v^[m-1], v^[m-2]).
     CellVectorField<dim> u, u_old, u_old2, v_old, v_old2;
