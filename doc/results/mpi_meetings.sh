@@ -6,23 +6,26 @@
 # stack; each is counted against the innermost fvfsi source line on its stack (addr2line with
 # inlining, from the -g of the build). Prints the totals per kind and, per call site, the count
 # (with PER: divided by the number in summary.json's results under that key, e.g.
-# outer_iterations for the solid scene, solid_outer_iterations for FSI). Needs perf with uprobes (root) and a build with
-# debug information (the Release flags of Debian's deal.II carry -g).
+# outer_iterations for the solid scene, solid_outer_iterations for FSI). Needs perf with uprobes
+# (root) and a build with debug information (the Release flags of Debian's deal.II carry -g).
+# FVFSI and RUN_DIRECTORY may be relative to the current directory; PRM is relative to the
+# project root. perf drops a few calls when its buffers fill (repeated counts differ by ~1%).
 #   usage: doc/results/mpi_meetings.sh FVFSI RUN_DIRECTORY [PER] -- PRM [--set ...]
 #   e.g.:  doc/results/mpi_meetings.sh build/fvfsi build/meet outer_iterations -- \
 #            prm/turek_hron_csm3.prm --set "Mesh/Generator arguments=123: 6" \
 #            --set "Time/End time=0.05"
 set -euo pipefail
-cd "$(dirname "$0")/../.."
 fvfsi=$(realpath "$1")
 runs=$(realpath -m "$2")
+cd "$(dirname "$0")/../.."
 per=""
 [[ $3 != -- ]] && { per=$3; shift; }
 shift 3
 mkdir -p "$runs"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 libmpi=$(ldd "$fvfsi" | awk '/libmpi\.so/ {print $3}' | head -1)
-[[ -n $libmpi ]] || libmpi=$(ldd "$(dirname "$fvfsi")/libfvfsi_lib.so" | awk '/libmpi\.so/ {print $3}' | head -1)
+[[ -n $libmpi ]] ||
+  libmpi=$(ldd "$(dirname "$fvfsi")/libfvfsi_lib.so" | awk '/libmpi\.so/ {print $3}' | head -1)
 for f in MPI_Allreduce MPI_Waitall MPI_Barrier; do
   perf probe -q -x "$(realpath "$libmpi")" "$f" 2> /dev/null || true
 done
@@ -37,7 +40,8 @@ WRAP
 chmod +x "$runs/wrap.sh"
 # The library beside FVFSI (a build copied out of build/ runs its own copy).
 export LD_LIBRARY_PATH=$(dirname "$fvfsi")${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
-mpirun -np 2 -x LD_LIBRARY_PATH "$runs/wrap.sh" "$fvfsi" "$@" --set "Output directory=$runs/out" > "$runs/log" 2>&1
+mpirun -np 2 -x LD_LIBRARY_PATH "$runs/wrap.sh" "$fvfsi" "$@" --set "Output directory=$runs/out" \
+  > "$runs/log" 2>&1
 perf script -i "$runs/perf.data" -F event,ip,sym,dso 2> /dev/null > "$runs/script"
 /usr/bin/python3 - "$runs" "$per" "$(dirname "$fvfsi")/libfvfsi_lib.so" << 'PY'
 import collections, json, re, subprocess, sys
