@@ -69,9 +69,6 @@ namespace fvfsi
     {
       residual[j].reinit(geometry.partitioner());
       du[j].reinit(geometry.partitioner());
-    }
-    for (unsigned int j = 0; j < dim; ++j)
-    {
       laplacian.reinit_matrix(matrix[j]);
       linear_solver[j] = std::make_unique<LinearSolver>(parameters.solver);
     }
