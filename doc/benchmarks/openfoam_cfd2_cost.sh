@@ -16,22 +16,9 @@ WORK=${WORK:-$(mktemp -d)}
 PY=/usr/bin/python3
 export WM_PROJECT_DIR=/usr/share/openfoam OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 C=$WORK/of
-mkdir -p "$C/system"
-cp -r "$HERE/template/constant" "$C/"; cp -r "$HERE/template/0" "$C/0"
-cp "$HERE/template/system/fvSchemes.steady" "$C/system/fvSchemes"
-cp "$HERE/template/system/fvSolution.steady" "$C/system/fvSolution"
-cp "$HERE/template/system/forces" "$C/system/forces"
-cat > "$C/system/controlDict" <<EOD
-FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
-application simpleFoam; startFrom startTime; startTime 0; stopAt endTime; endTime 20000; deltaT 1;
-writeControl timeStep; writeInterval 100000; purgeWrite 0; writeFormat ascii; writePrecision 12;
-writeCompression off; timeFormat general; timePrecision 10; runTimeModifiable false;
-functions { #include "forces" }
-EOD
-$PY "$HERE/gen_mesh.py" 1 "$C/system/blockMeshDict" > "$C/log.gen_mesh"
-(cd "$C" && blockMesh > log.blockMesh 2>&1 && checkMesh > log.checkMesh 2>&1)
-$PY "$HERE/set_inlet.py" "$C" 1.0 0 > "$C/log.set_inlet"
-of_cells=$(grep -m1 "^ *cells:" "$C/log.checkMesh" | awk '{print $2}')
+source "$(dirname "$0")/openfoam_case.sh"
+openfoam_case "$C" steady simpleFoam 1 1.0 20000 1 'functions { #include "forces" }'
+of_cells=$OF_CELLS
 LZ=$(grep -m1 "^LZ" "$HERE/gen_mesh.py" | awk '{print $3}')
 now() { date +%s.%N; }
 of_t=(); fv_t=(); of_drag=(); fv_drag=(); of_it=(); fv_it=()

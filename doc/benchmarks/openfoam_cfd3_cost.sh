@@ -22,20 +22,9 @@ WORK=${WORK:-$(mktemp -d)}
 export WM_PROJECT_DIR=/usr/share/openfoam OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 PY=/usr/bin/python3
 C=$WORK/of
-mkdir -p "$C/system"
-cp -r "$HERE/template/constant" "$C/"; cp -r "$HERE/template/0" "$C/0"
-cp "$HERE/template/system/fvSchemes.transient" "$C/system/fvSchemes"
-cp "$HERE/template/system/fvSolution.transient" "$C/system/fvSolution"
-cat > "$C/system/controlDict" <<EOD
-FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
-application pimpleFoam; startFrom startTime; startTime 0; stopAt endTime; endTime $END; deltaT $DT;
-writeControl timeStep; writeInterval 100000; purgeWrite 0; writeFormat ascii; writePrecision 12;
-writeCompression off; timeFormat general; timePrecision 10; runTimeModifiable false;
-EOD
-$PY "$HERE/gen_mesh.py" 1 "$C/system/blockMeshDict" > "$C/log.gen_mesh"
-(cd "$C" && blockMesh > log.blockMesh 2>&1 && checkMesh > log.checkMesh 2>&1)
-$PY "$HERE/set_inlet.py" "$C" 2.0 0 > "$C/log.set_inlet"
-of_cells=$(grep -m1 "^ *cells:" "$C/log.checkMesh" | awk '{print $2}')
+source "$(dirname "$0")/openfoam_case.sh"
+openfoam_case "$C" transient pimpleFoam 1 2.0 "$END" "$DT"
+of_cells=$OF_CELLS
 FVFSI_ARGS=(--set "Mesh/Generator arguments=40" --set "Time/End time=$END" --set "Time/Time step=$DT"
             --set "Fluid/Velocity inlet=inlet: 1.5*2*4*y*(0.41-y)/0.41^2; 0"
             --set "Fluid scene/Output interval=0" --set "Output directory=$WORK/fv")

@@ -1,0 +1,28 @@
+# The OpenFOAM side of the peer comparisons (sourced by openfoam_cfd2_cost.sh,
+# openfoam_cfd3_cost.sh and openfoam_cfd3_parallel.sh): the Turek-Hron channel case of the peer
+# folder ($HERE: ../shared/peers/openfoam-cfd3) written into a case directory.
+#
+#   openfoam_case CASE KIND APPLICATION LEVEL UBAR END_TIME DELTA_T [CONTROLDICT_EXTRA]
+#
+# KIND: transient or steady (which fvSchemes and fvSolution of the template); LEVEL: the mesh of
+# gen_mesh.py (1: 20 280 cells, 2: 81 120); UBAR: the mean inflow velocity [m/s] (set_inlet.py);
+# CONTROLDICT_EXTRA: appended to controlDict (e.g. the forces function). Sets OF_CELLS.
+openfoam_case() {
+  local c=$1 kind=$2 application=$3 level=$4 ubar=$5 end=$6 dt=$7 extra=${8:-}
+  mkdir -p "$c/system"
+  cp -r "$HERE/template/constant" "$c/"; cp -r "$HERE/template/0" "$c/0"
+  cp "$HERE/template/system/fvSchemes.$kind" "$c/system/fvSchemes"
+  cp "$HERE/template/system/fvSolution.$kind" "$c/system/fvSolution"
+  cp "$HERE/template/system/forces" "$c/system/forces"
+  cat > "$c/system/controlDict" <<EOD
+FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
+application $application; startFrom startTime; startTime 0; stopAt endTime; endTime $end; deltaT $dt;
+writeControl timeStep; writeInterval 100000; purgeWrite 0; writeFormat ascii; writePrecision 12;
+writeCompression off; timeFormat general; timePrecision 10; runTimeModifiable false;
+$extra
+EOD
+  /usr/bin/python3 "$HERE/gen_mesh.py" "$level" "$c/system/blockMeshDict" > "$c/log.gen_mesh"
+  (cd "$c" && blockMesh > log.blockMesh 2>&1 && checkMesh > log.checkMesh 2>&1)
+  /usr/bin/python3 "$HERE/set_inlet.py" "$c" "$ubar" 0 > "$c/log.set_inlet"
+  OF_CELLS=$(grep -m1 "^ *cells:" "$c/log.checkMesh" | awk '{print $2}')
+}
