@@ -5,7 +5,8 @@
 #   openfoam_case CASE KIND APPLICATION LEVEL UBAR END_TIME DELTA_T [CONTROLDICT_EXTRA]
 #
 # KIND: transient or steady (which fvSchemes and fvSolution of the template); LEVEL: the mesh of
-# gen_mesh.py (1: 20 280 cells, 2: 81 120); UBAR: the mean inflow velocity [m/s] (set_inlet.py);
+# gen_mesh.py (1: 20 280 cells, 2: 81 120), or 1.5: gen_mesh.py's blocks with 3 instead of 2 or 4
+# times its base cell counts (45 630 cells; beside fvfsi's n = 60, the shipped FSI3's fluid); UBAR: the mean inflow velocity [m/s] (set_inlet.py);
 # CONTROLDICT_EXTRA: appended to controlDict (e.g. the forces function). Sets OF_CELLS.
 openfoam_case() {
   local c=$1 kind=$2 application=$3 level=$4 ubar=$5 end=$6 dt=$7 extra=${8:-}
@@ -21,7 +22,22 @@ writeControl timeStep; writeInterval 100000; purgeWrite 0; writeFormat ascii; wr
 writeCompression off; timeFormat general; timePrecision 10; runTimeModifiable false;
 $extra
 EOD
-  /usr/bin/python3 "$HERE/gen_mesh.py" "$level" "$c/system/blockMeshDict" > "$c/log.gen_mesh"
+  if [ "$level" = 1.5 ]; then # gen_mesh.py takes whole levels (2^level); its counts() times 3
+    /usr/bin/python3 - "$HERE" "$c/system/blockMeshDict" > "$c/log.gen_mesh" <<'EOP'
+import math, sys
+sys.path.insert(0, sys.argv[1])
+import gen_mesh
+counts_of = gen_mesh.counts
+def counts_times_3(level):
+    n, g = counts_of(math.log2(3))
+    return {k: int(round(v)) for k, v in n.items()}, g
+gen_mesh.counts = counts_times_3
+sys.argv = ["gen_mesh.py", "0", sys.argv[2]]
+gen_mesh.main()
+EOP
+  else
+    /usr/bin/python3 "$HERE/gen_mesh.py" "$level" "$c/system/blockMeshDict" > "$c/log.gen_mesh"
+  fi
   (cd "$c" && blockMesh > log.blockMesh 2>&1 && checkMesh > log.checkMesh 2>&1)
   /usr/bin/python3 "$HERE/set_inlet.py" "$c" "$ubar" 0 > "$c/log.set_inlet"
   OF_CELLS=$(grep -m1 "^ *cells:" "$c/log.checkMesh" | awk '{print $2}')

@@ -10,13 +10,13 @@
 #   usage (from the project root):
 #     openfoam_cfd3_parallel.sh FVFSI_EXECUTABLE [LEVEL=1] [STEPS=400] [DT=0.00025] [ROUNDS=3] [JSON]
 #   LEVEL 1: pimpleFoam 20 280 cells, fvfsi n = 40 (20 960 cells); LEVEL 2: 81 120 against n = 80
-#   (83 840 cells). The shipped FSI3's fluid (n = 60, 47 160 cells) lies between the two.
+#   (83 676 cells); LEVEL 1.5: 45 630 against n = 60 (47 160 cells, the shipped FSI3's fluid).
 #   needs: apt-get install -y openfoam python3-numpy   (OpenFOAM v1912 from Debian)
 set -euo pipefail
 HERE=${PEER:-$(cd "$(dirname "$0")/../../../shared/peers/openfoam-cfd3" && pwd)}
 FV=${1:?usage: openfoam_cfd3_parallel.sh FVFSI_EXECUTABLE [LEVEL] [STEPS] [DT] [ROUNDS] [JSON]}
 LEVEL=${2:-1}; STEPS=${3:-400}; DT=${4:-0.00025}; ROUNDS=${5:-3}; JSON=${6:-}
-case $LEVEL in 1) N=40 ;; 2) N=80 ;; *) echo "LEVEL must be 1 or 2" >&2; exit 1 ;; esac
+case $LEVEL in 1) N=40 ;; 1.5) N=60 ;; 2) N=80 ;; *) echo "LEVEL must be 1, 1.5 or 2" >&2; exit 1 ;; esac
 PRM=${PRM:-$(pwd)/prm/turek_hron_cfd3.prm}
 END=$(python3 -c "print($STEPS*$DT)")
 WORK=${WORK:-$(mktemp -d)}
