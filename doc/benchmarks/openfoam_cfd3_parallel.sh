@@ -35,16 +35,21 @@ FVFSI_ARGS=(--set "Mesh/Generator arguments=$N" --set "Time/End time=$END" --set
             --set "Fluid/Velocity inlet=inlet: 1.5*2*4*y*(0.41-y)/0.41^2; 0"
             --set "Fluid scene/Output interval=0" --set "Output directory=$WORK/fv")
 now() { date +%s.%N; }
+# timed LOG COMMAND...: the wall seconds of COMMAND (output to LOG); stops the script if it fails
+timed() {
+  local log=$1 s; shift; s=$(now)
+  "$@" > "$log" 2>&1 || { echo "failed: $* (see $log)" >&2; return 1; }
+  echo "$(now) - $s" | bc
+}
 of1=(); of2=(); fv1=(); fv2=()
 for r in $(seq "$ROUNDS"); do
   rm -rf "$C"/[1-9]* "$C"/0.[0-9]* "$C/postProcessing" "$C"/processor*/[1-9]* "$C"/processor*/0.[0-9]*
-  of1+=($(cd "$C" && { s=$(now); taskset -c 0 pimpleFoam > log.pimpleFoam.1 2>&1; echo "$(now) - $s" | bc; }))
-  of2+=($(cd "$C" && { s=$(now); mpirun -np 2 pimpleFoam -parallel > log.pimpleFoam.2 2>&1; echo "$(now) - $s" | bc; }))
-  fv1+=($({ s=$(now); taskset -c 0 "$FV" "$PRM" "${FVFSI_ARGS[@]}" > "$WORK/fv.1.log" 2>&1; echo "$(now) - $s" | bc; }))
-  fv2+=($({ s=$(now); mpirun -np 2 "$FV" "$PRM" "${FVFSI_ARGS[@]}" > "$WORK/fv.2.log" 2>&1; echo "$(now) - $s" | bc; }))
+  t=$(cd "$C" && timed log.pimpleFoam.1 taskset -c 0 pimpleFoam) || exit 1; of1+=("$t")
+  t=$(cd "$C" && timed log.pimpleFoam.2 mpirun -np 2 pimpleFoam -parallel) || exit 1; of2+=("$t")
+  t=$(timed "$WORK/fv.1.log" taskset -c 0 "$FV" "$PRM" "${FVFSI_ARGS[@]}") || exit 1; fv1+=("$t")
+  t=$(timed "$WORK/fv.2.log" mpirun -np 2 "$FV" "$PRM" "${FVFSI_ARGS[@]}") || exit 1; fv2+=("$t")
   echo "round $r: pimpleFoam ${of1[-1]} / ${of2[-1]} s, fvfsi ${fv1[-1]} / ${fv2[-1]} s (one / two ranks)"
 done
-grep -q "^End" "$C/log.pimpleFoam.2" || { echo "pimpleFoam on two ranks did not finish: $C/log.pimpleFoam.2" >&2; exit 1; }
 fv_cells=$($PY -c "import json;print(json.load(open('$WORK/fv/summary.json'))['n_cells'])")
 $PY - "$of_cells" "$fv_cells" "$STEPS" "${of1[*]}" "${of2[*]}" "${fv1[*]}" "${fv2[*]}" "$JSON" <<'EOP'
 import json, sys, statistics as st
