@@ -12,25 +12,20 @@ set -euo pipefail
 HERE=${PEER:-$(cd "$(dirname "$0")/../../../shared/peers/openfoam-cfd3" && pwd)}
 FV=${1:?usage: openfoam_cfd2_cost.sh FVFSI_EXECUTABLE [REPEATS]}
 REPEATS=${2:-3}
-WORK=${WORK:-$(mktemp -d)}
-PY=/usr/bin/python3
-export WM_PROJECT_DIR=/usr/share/openfoam OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-C=$WORK/of
-source "$(dirname "$0")/openfoam_case.sh"
+source "$(dirname "$0")/peer_common.sh"
 openfoam_case "$C" steady simpleFoam 1 1.0 20000 1 'functions { #include "forces" }'
 of_cells=$OF_CELLS
 LZ=$(grep -m1 "^LZ" "$HERE/gen_mesh.py" | awk '{print $3}')
-now() { date +%s.%N; }
 of_t=(); fv_t=(); of_drag=(); fv_drag=(); of_it=(); fv_it=()
 for r in $(seq "$REPEATS"); do # alternate the two, so that a drift of the machine hits both
   rm -rf "$C"/[1-9]* "$C/postProcessing"
-  s=$(now); (cd "$C" && simpleFoam > log.simpleFoam 2>&1); of_t+=($(echo "$(now) - $s" | bc))
+  t=$(cd "$C" && timed log.simpleFoam simpleFoam) || exit 1; of_t+=("$t")
   # force.dat: Time ((total) (pressure) (viscous)); drag = total x / LZ
   last=$(grep -v '^#' "$C"/postProcessing/forces/0/force.dat | tail -1 | tr -d '()')
   of_it+=($(echo "$last" | awk '{print $1}'))
   of_drag+=($(echo "$last" | awk -v lz="$LZ" '{printf "%.7g", $2 / lz}'))
-  s=$(now); "$FV" prm/turek_hron_cfd2.prm --set "Output directory=$WORK/fv" > "$WORK/fv.log" 2>&1
-  fv_t+=($(echo "$(now) - $s" | bc))
+  t=$(timed "$WORK/fv.log" "$FV" prm/turek_hron_cfd2.prm --set "Output directory=$WORK/fv") || exit 1
+  fv_t+=("$t")
   fv_drag+=($($PY -c "import json;print(json.load(open('$WORK/fv/summary.json'))['results']['drag'])"))
   fv_it+=($($PY -c "import json;print(json.load(open('$WORK/fv/summary.json'))['results']['time_steps'])"))
 done

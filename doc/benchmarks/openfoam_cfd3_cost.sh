@@ -10,30 +10,23 @@
 #   needs: apt-get install -y openfoam python3-numpy   (OpenFOAM v1912 from Debian)
 # pimpleFoam settings: PISO (1 outer, 2 pressure correctors, 1 non-orthogonal corrector), backward,
 # Gauss linearUpwind, GAMG for p (relTol 0.01, final 0, tolerance 1e-7), symGaussSeidel for U (1e-8).
-# fvfsi runs prm/turek_hron_cfd3.prm with the mesh, dt, end time and inflow overridden (edit FVFSI_ARGS
-# below if the parameter names change).
+# fvfsi runs prm/turek_hron_cfd3.prm with the mesh, dt, end time and inflow overridden (edit fvfsi_cfd3_args
+# in peer_common.sh if the parameter names change).
 set -euo pipefail
 HERE=${PEER:-$(cd "$(dirname "$0")/../../../shared/peers/openfoam-cfd3" && pwd)}
 FV=${1:?usage: cost.sh FVFSI_EXECUTABLE [STEPS] [DT] [REPEATS]}
 STEPS=${2:-400}; DT=${3:-0.00025}; REPEATS=${4:-3}
 PRM=${PRM:-$(pwd)/prm/turek_hron_cfd3.prm}   # run from the project root, or set PRM
 END=$(python3 -c "print($STEPS*$DT)")
-WORK=${WORK:-$(mktemp -d)}
-export WM_PROJECT_DIR=/usr/share/openfoam OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-PY=/usr/bin/python3
-C=$WORK/of
-source "$(dirname "$0")/openfoam_case.sh"
+source "$(dirname "$0")/peer_common.sh"
 openfoam_case "$C" transient pimpleFoam 1 2.0 "$END" "$DT"
 of_cells=$OF_CELLS
-FVFSI_ARGS=(--set "Mesh/Generator arguments=40" --set "Time/End time=$END" --set "Time/Time step=$DT"
-            --set "Fluid/Velocity inlet=inlet: 1.5*2*4*y*(0.41-y)/0.41^2; 0"
-            --set "Fluid scene/Output interval=0" --set "Output directory=$WORK/fv")
-now() { date +%s.%N; }
+fvfsi_cfd3_args 40 "$END" "$DT"
 of_t=(); fv_t=()
 for r in $(seq "$REPEATS"); do            # alternate the two, so that a drift of the machine hits both
   rm -rf "$C"/[1-9]* "$C"/0.[0-9]* "$C/postProcessing"
-  s=$(now); (cd "$C" && pimpleFoam > log.pimpleFoam 2>&1); of_t+=($(echo "$(now) - $s" | bc))
-  s=$(now); "$FV" "$PRM" "${FVFSI_ARGS[@]}" > "$WORK/fv.log" 2>&1; fv_t+=($(echo "$(now) - $s" | bc))
+  t=$(cd "$C" && timed log.pimpleFoam pimpleFoam) || exit 1; of_t+=("$t")
+  t=$(timed "$WORK/fv.log" "$FV" "$PRM" "${FVFSI_ARGS[@]}") || exit 1; fv_t+=("$t")
 done
 fv_cells=$($PY -c "import json;print(json.load(open('$WORK/fv/summary.json'))['n_cells'])")
 $PY - "$of_cells" "$fv_cells" "$STEPS" "${of_t[*]}" "${fv_t[*]}" <<'EOP'

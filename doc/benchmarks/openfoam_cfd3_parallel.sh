@@ -19,11 +19,7 @@ LEVEL=${2:-1}; STEPS=${3:-400}; DT=${4:-0.00025}; ROUNDS=${5:-3}; JSON=${6:-}
 case $LEVEL in 1) N=40 ;; 1.5) N=60 ;; 2) N=80 ;; *) echo "LEVEL must be 1, 1.5 or 2" >&2; exit 1 ;; esac
 PRM=${PRM:-$(pwd)/prm/turek_hron_cfd3.prm}
 END=$(python3 -c "print($STEPS*$DT)")
-WORK=${WORK:-$(mktemp -d)}
-export WM_PROJECT_DIR=/usr/share/openfoam OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-PY=/usr/bin/python3
-C=$WORK/of
-source "$(dirname "$0")/openfoam_case.sh"
+source "$(dirname "$0")/peer_common.sh"
 openfoam_case "$C" transient pimpleFoam "$LEVEL" 2.0 "$END" "$DT"
 of_cells=$OF_CELLS
 cat > "$C/system/decomposeParDict" <<EOD
@@ -31,16 +27,7 @@ FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict;
 numberOfSubdomains 2; method simple; simpleCoeffs { n (2 1 1); delta 0.001; }
 EOD
 (cd "$C" && decomposePar -force > log.decomposePar 2>&1)
-FVFSI_ARGS=(--set "Mesh/Generator arguments=$N" --set "Time/End time=$END" --set "Time/Time step=$DT"
-            --set "Fluid/Velocity inlet=inlet: 1.5*2*4*y*(0.41-y)/0.41^2; 0"
-            --set "Fluid scene/Output interval=0" --set "Output directory=$WORK/fv")
-now() { date +%s.%N; }
-# timed LOG COMMAND...: the wall seconds of COMMAND (output to LOG); stops the script if it fails
-timed() {
-  local log=$1 s; shift; s=$(now)
-  "$@" > "$log" 2>&1 || { echo "failed: $* (see $log)" >&2; return 1; }
-  echo "$(now) - $s" | bc
-}
+fvfsi_cfd3_args "$N" "$END" "$DT"
 of1=(); of2=(); fv1=(); fv2=()
 for r in $(seq "$ROUNDS"); do
   rm -rf "$C"/[1-9]* "$C"/0.[0-9]* "$C/postProcessing" "$C"/processor*/[1-9]* "$C"/processor*/0.[0-9]*
