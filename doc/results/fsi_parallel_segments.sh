@@ -7,13 +7,14 @@
 # the same checkpoint: once on one rank (`taskset -c 0`) and once on two (`mpirun -np 2`), the
 # order swapped from one segment to the next. The two-rank run's checkpoint starts the next
 # segment, so the segments follow one trajectory: the two-rank run's, restarted exactly (a restart
-# continues a run to the last bit, tests/io/checkpoint_restart). Per segment and in all:
+# continues a run to the last bit, tests/coupling/checkpoint_restart). Per segment and in all:
 #   T1, T2  the time-step loop's wall time on one and two ranks: the sum of the scene's top-level
 #           TimerOutput sections (summary.json `timing`: fluid, mesh motion, geometry, solid,
 #           transfers, acceleration, step start copy; not the checkpoint), which covers all but
 #           ~1% of a whole run's wall time (the set-up and the last output);
 #   E = T1 / (2 T2), and the efficiency of the `geometry` section (local loops with no
-#   communication: below 100% only by the machine) as a check on the moment.
+#   communication: 93-133% when the machine is quiet, each half fitting the caches better)
+#   as a check on the moment.
 # Each run also pays a restart (meshes built, checkpoint read, ~3 s) and writes one; the table
 # shows the processes' wall times too. Needs two free cores and ~80 minutes (AMD EPYC VM); a
 # completed segment in RUN_DIRECTORY is not run again.
