@@ -10,7 +10,7 @@
 #   usage (from the project root):
 #     openfoam_cfd3_parallel.sh FVFSI_EXECUTABLE [LEVEL=1] [STEPS=400] [DT=0.00025] [ROUNDS=3] [JSON]
 #   LEVEL 1: pimpleFoam 20 280 cells, fvfsi n = 40 (20 960 cells); LEVEL 2: 81 120 against n = 80
-#   (83 676 cells); LEVEL 1.5: 45 630 against n = 60 (47 160 cells, the shipped FSI3's fluid).
+#   (83 676 cells); LEVEL 1.5: 45 684 against n = 60 (47 160 cells, the shipped FSI3's fluid).
 #   needs: apt-get install -y openfoam python3-numpy   (OpenFOAM v1912 from Debian)
 set -euo pipefail
 HERE=${PEER:-$(cd "$(dirname "$0")/../../../shared/peers/openfoam-cfd3" && pwd)}
