@@ -21,6 +21,8 @@
 # A second pass on the same segments: FROM_RUNS=<the first pass's RUN_DIRECTORY> starts every
 # segment from that pass's checkpoints (the same work again) and also prints the table of both
 # passes with each segment's fastest one- and two-rank times.
+# Three passes or more: doc/results/fsi_parallel_segments_median.py RUNS RUNS_2 RUNS_3 takes each
+# segment's median one- and two-rank times (performance.md reports that figure).
 # Writes RUN_DIRECTORY/segments.json: each segment's times and the sections summed over all.
 #   usage: doc/results/fsi_parallel_segments.sh [path/to/fvfsi [RUN_DIRECTORY [SEGMENT_STEPS
 #          [END_TIME [--set KEY=VALUE ...]]]]]   (END_TIME and the --set arguments: for a short

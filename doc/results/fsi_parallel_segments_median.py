@@ -1,0 +1,93 @@
+#!/usr/bin/env python3
+"""Median of several passes of doc/results/fsi_parallel_segments.sh (performance.md, section 8).
+
+Each pass runs the same 17 segments of the shipped FSI3 run on one and on two ranks from the same
+checkpoints; the work of a segment is the same in every pass (checked here: time steps, coupling
+iterations, solid outer iterations, pressure solves and their CG iterations), so the passes differ
+only by the machine. For each segment this takes the median of its one-rank loop times T1 and the
+median of its two-rank loop times T2 over the passes, and prints
+
+    E = sum of median T1 / (2 sum of median T2)
+
+beside each pass's own E. Reads the passes' segments.json from doc/results/fsi_parallel_segments.json
+(the shipped raw data) or from run directories given on the command line.
+
+  usage: doc/results/fsi_parallel_segments_median.py [RUN_DIRECTORY ...]
+"""
+import json
+import os
+import statistics
+import sys
+
+WORK = ["time_steps", "coupling_iterations", "solid_outer_iterations",
+        "fluid_pressure_linear_solves", "fluid_pressure_iterations_per_solve"]
+
+
+def load_passes(arguments):
+    if arguments:
+        return {d: json.load(open(os.path.join(d, "segments.json"))) for d in arguments}
+    shipped = os.path.join(os.path.dirname(os.path.abspath(__file__)), "fsi_parallel_segments.json")
+    return json.load(open(shipped))["passes"]
+
+
+def loop_seconds(segment):
+    """(T1, T2): the time-step loop's wall time on one and on two ranks [s]."""
+    return segment["loop_seconds"]
+
+
+def geometry_efficiency(segment):
+    """The geometry section's efficiency: local loops with no communication, 93-133% on a quiet
+    machine; lower means the moment was disturbed. '-' where the segment has no mesh motion."""
+    one, two = (t.get("geometry", 0.0) for t in segment["timing"])
+    return "%.0f%%" % (100 * one / (2 * two)) if two > 0 else "-"
+
+
+def check_same_work(passes):
+    """The passes must have done the same work segment by segment, or their times do not compare."""
+    names = list(passes)
+    first = passes[names[0]]["segments"]
+    for name in names[1:]:
+        for a, b in zip(first, passes[name]["segments"]):
+            for r in (0, 1):
+                for key in WORK:
+                    if key in a["results"][r] and a["results"][r][key] != b["results"][r].get(key):
+                        sys.exit("fsi_parallel_segments_median.py: segment %d, %d rank(s): %s differs "
+                                 "between %s and %s" % (a["segment"], r + 1, key, names[0], name))
+
+
+def main():
+    passes = load_passes(sys.argv[1:])
+    if len(passes) < 2:
+        sys.exit("fsi_parallel_segments_median.py: needs two passes or more")
+    check_same_work(passes)
+    names = list(passes)
+    n = len(passes[names[0]]["segments"])
+    print("| segment | T1 per pass [s] | T2 per pass [s] | E per pass | geometry E per pass "
+          "| median T1, T2 [s] | E of medians |")
+    print("|---|---|---|---|---|---|---|")
+    M1 = M2 = 0.0
+    for k in range(n):
+        t1 = [loop_seconds(passes[p]["segments"][k])[0] for p in names]
+        t2 = [loop_seconds(passes[p]["segments"][k])[1] for p in names]
+        m1, m2 = statistics.median(t1), statistics.median(t2)
+        M1 += m1
+        M2 += m2
+        geometry = ", ".join(geometry_efficiency(passes[p]["segments"][k]) for p in names)
+        print("| %d | %s | %s | %s | %s | %.1f, %.1f | %.0f%% |"
+              % (k + 1, ", ".join("%.1f" % t for t in t1), ", ".join("%.1f" % t for t in t2),
+                 ", ".join("%.0f%%" % (100 * a / (2 * b)) for a, b in zip(t1, t2)), geometry,
+                 m1, m2, 100 * m1 / (2 * m2)))
+    totals = [(sum(loop_seconds(s)[0] for s in passes[p]["segments"]),
+               sum(loop_seconds(s)[1] for s in passes[p]["segments"])) for p in names]
+    print("| **all** | %s | %s | %s | | %.1f, %.1f | **%.1f%%** |"
+          % (", ".join("%.1f" % a for a, _ in totals), ", ".join("%.1f" % b for _, b in totals),
+             ", ".join("%.1f%%" % (100 * a / (2 * b)) for a, b in totals), M1, M2, 100 * M1 / (2 * M2)))
+    fastest = [sum(min(loop_seconds(passes[p]["segments"][k])[r] for p in names) for k in range(n))
+               for r in (0, 1)]
+    print("\nmedian of the passes' own E: %.1f%%; from each segment's fastest T1 and T2: %.1f%%"
+          % (100 * statistics.median(a / (2 * b) for a, b in totals),
+             100 * fastest[0] / (2 * fastest[1])))
+
+
+if __name__ == "__main__":
+    main()
