@@ -18,11 +18,10 @@
 # Each run also pays a restart (meshes built, checkpoint read, ~3 s) and writes one; the table
 # shows the processes' wall times too. Needs two free cores and ~80 minutes (AMD EPYC VM); a
 # completed segment in RUN_DIRECTORY is not run again.
-# A second pass on the same segments: FROM_RUNS=<the first pass's RUN_DIRECTORY> starts every
-# segment from that pass's checkpoints (the same work again) and also prints the table of both
-# passes with each segment's fastest one- and two-rank times.
-# Three passes or more: doc/results/fsi_parallel_segments_median.py RUNS RUNS_2 RUNS_3 takes each
-# segment's median one- and two-rank times (performance.md reports that figure).
+# More passes on the same segments: FROM_RUNS=<the first pass's RUN_DIRECTORY> starts every
+# segment from that pass's checkpoints (the same work again); then
+# doc/results/fsi_parallel_segments_median.py RUNS RUNS_2 RUNS_3 takes each segment's median one-
+# and two-rank times over the passes (performance.md reports that figure).
 # Writes RUN_DIRECTORY/segments.json: each segment's times and the sections summed over all.
 #   usage: doc/results/fsi_parallel_segments.sh [path/to/fvfsi [RUN_DIRECTORY [SEGMENT_STEPS
 #          [END_TIME [--set KEY=VALUE ...]]]]]   (END_TIME and the --set arguments: for a short
@@ -70,13 +69,13 @@ for k in $(seq 1 "$n_seg"); do
   for np in $order; do run "$k" "$np" "$previous" "$end_k" "${extra[@]}"; done
   previous=${FROM_RUNS:-$runs}/seg${k}_np2
 done
-/usr/bin/python3 - "$runs" "$n_seg" "${FROM_RUNS:-}" <<'PY'
+/usr/bin/python3 - "$runs" "$n_seg" <<'PY'
 import json, sys
-runs, n, first = sys.argv[1], int(sys.argv[2]), sys.argv[3]
-load = lambda k, np, d=runs: json.load(open("%s/seg%d_np%d/summary.json" % (d, k, np)))
+runs, n = sys.argv[1], int(sys.argv[2])
+load = lambda k, np: json.load(open("%s/seg%d_np%d/summary.json" % (runs, k, np)))
 wall = lambda k, np: float(open("%s/seg%d_np%d.wall" % (runs, k, np)).read())
-def loop_time(k, np, d=runs):
-    t = load(k, np, d)["timing"]
+def loop_time(k, np):
+    t = load(k, np)["timing"]
     return sum(v for key, v in t.items() if ":" not in key and key != "checkpoint")
 print("| segment | last step | T1 [s] | T2 [s] | E | geometry E | process wall 1 / 2 ranks [s] |")
 print("|---|---|---|---|---|---|---|")
@@ -109,14 +108,4 @@ json.dump({"segments": [{"segment": k, "loop_seconds": [loop_time(k, 1), loop_ti
            "sections": sections, "efficiency_loop": S1 / (2 * S2),
            "efficiency_process_wall": W1 / (2 * W2)},
           open("%s/segments.json" % runs, "w"), indent=1)
-if first:  # both passes: each segment's fastest run on one and on two ranks
-    print("\n| segment | T1: pass 1, pass 2 [s] | T2: pass 1, pass 2 [s] | E (fastest T1 / 2 fastest T2) |")
-    print("|---|---|---|---|")
-    F1 = F2 = 0.0
-    for k in range(1, n + 1):
-        a = [loop_time(k, 1, first), loop_time(k, 1)]
-        b = [loop_time(k, 2, first), loop_time(k, 2)]
-        F1 += min(a); F2 += min(b)
-        print("| %d | %.2f, %.2f | %.2f, %.2f | %.0f%% |" % (k, *a, *b, 100 * min(a) / (2 * min(b))))
-    print("| all | %.1f | %.1f | **%.1f%%** |" % (F1, F2, 100 * F1 / (2 * F2)))
 PY
