@@ -9,6 +9,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fvfsi/fv/cell_matrix_product.h>
 #include <fvfsi/fv/gathered_direct_solver.h>
 #include <fvfsi/mesh/fv_geometry.h>
 
@@ -73,7 +74,8 @@ namespace fvfsi
     /// CG or GMRES (right-preconditioned, restarted after 30 iterations) by deal.II's solvers
     /// directly on the cell vectors (the Trilinos matrix and preconditioner take
     /// LinearAlgebra::distributed::Vector): no copies into Epetra vectors, no AztecOO set-up and
-    /// no separate initial residual per solve. `b_norm`, `x_norm`: |b| and |x| of the start,
+    /// no separate initial residual per solve; the products A p by CellMatrixProduct on the
+    /// cell vectors (no Epetra import). `b_norm`, `x_norm`: |b| and |x| of the start,
     /// computed once per solve (each is a meeting of all ranks).
     unsigned int solve_krylov(const dealii::TrilinosWrappers::SparseMatrix& matrix, CellVector& x,
                               const CellVector& b, double b_norm, double x_norm,
@@ -91,6 +93,7 @@ namespace fvfsi
     LinearSolverParameters parameters;
     std::unique_ptr<dealii::TrilinosWrappers::PreconditionBase> preconditioner;
     GatheredDirectSolver direct; ///< Preconditioner = direct
+    CellMatrixProduct product;   ///< A x of the Krylov solvers
     double matrix_norm = 0;      ///< |A|_inf of the matrix of the last initialize()
     unsigned long solve_count = 0, iteration_count = 0;
     /// Iterations of the first solve after initialize() (-1: none yet). A later solve that needs
