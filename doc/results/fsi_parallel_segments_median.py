@@ -10,9 +10,11 @@ median of its two-rank loop times T2 over the passes, and prints
     E = sum of median T1 / (2 sum of median T2)
 
 beside each pass's own E. Reads the passes' segments.json from doc/results/fsi_parallel_segments.json
-(the shipped raw data) or from run directories given on the command line.
+(the shipped raw data) or from what the command line names: run directories, and files of the
+shipped raw data's form (their passes are taken under the file's name), e.g. the three passes of
+one binary and a pass of another on the same segments (the same work is checked).
 
-  usage: doc/results/fsi_parallel_segments_median.py [RUN_DIRECTORY ...]
+  usage: doc/results/fsi_parallel_segments_median.py [RUN_DIRECTORY | RAW_DATA.json ...]
 """
 import json
 import os
@@ -24,10 +26,18 @@ WORK = ["time_steps", "coupling_iterations", "solid_outer_iterations",
 
 
 def load_passes(arguments):
-    if arguments:
-        return {d: json.load(open(os.path.join(d, "segments.json"))) for d in arguments}
-    shipped = os.path.join(os.path.dirname(os.path.abspath(__file__)), "fsi_parallel_segments.json")
-    return json.load(open(shipped))["passes"]
+    if not arguments:
+        shipped = os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                               "fsi_parallel_segments.json")
+        return json.load(open(shipped))["passes"]
+    passes = {}
+    for a in arguments:
+        if a.endswith(".json"):
+            for name, data in json.load(open(a))["passes"].items():
+                passes["%s: %s" % (os.path.basename(a), name)] = data
+        else:
+            passes[a] = json.load(open(os.path.join(a, "segments.json")))
+    return passes
 
 
 def loop_seconds(segment):
