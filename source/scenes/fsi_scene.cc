@@ -1,6 +1,5 @@
 #include <deal.II/base/utilities.h>
 
-#include <fvfsi/io/progress.h>
 #include <fvfsi/mesh/mesh_builder.h>
 #include <fvfsi/scenes/fsi_scene.h>
 
@@ -393,6 +392,19 @@ namespace fvfsi
     if (!checkpoints.restart_from.empty())
       restore_checkpoint();
     make_output();
+    print_set_up();
+    if (steady)
+      run_steady(); // fsi_scene_steady.cc
+    else
+      run_transient(); // fsi_scene_time_loop.cc
+    timer.print_summary();
+    if (!steady)
+      print_result();
+  }
+
+  template <int dim>
+  void FsiScene<dim>::print_set_up() const
+  {
     pcout << "fvfsi: FSI " << dim << "D, fluid " << fluid_fv->n_global_cells() << " cells, solid "
           << solid_fv->n_global_cells() << " cells ("
           << selection_name(SolidParameters::model_names, solid_parameters.model) << "), interface "
@@ -403,103 +415,6 @@ namespace fvfsi
     pcout << "fvfsi: interface: the fluid faces cover each solid face " << least << " to " << most
           << " times (1 where the sides match), the fluid points lie within "
           << displacement_map->max_gap() << " m of the solid faces\n";
-    if (steady)
-    {
-      if (checkpoints.interval > 0 || !checkpoints.restart_from.empty())
-        throw std::runtime_error("FSI: Checkpoint interval and Restart from apply to transient "
-                                 "runs; a steady run (Fluid/Transient = false) has no time steps");
-      if (!checkpoints.initial_state_from.empty())
-        start_from_state(checkpoints.initial_state_from);
-      result.total_coupling_iterations = result.max_coupling_iterations = solve_steady();
-      pcout << "fvfsi: FSI steady state after " << result.total_coupling_iterations
-            << " coupling iterations, " << fluid->pseudo_steps() << " fluid pseudo steps, "
-            << result.solid_outer_iterations << " solid outer iterations\n";
-      output_results();
-      write_state();
-      timer.print_summary();
-      return;
-    }
-    // Steps to the end time at the present dt (Time step control may make it smaller).
-    const auto steps_to_end = [this]
-    {
-      return clock.step() + static_cast<unsigned int>(std::ceil(
-                              (clock.end_time() - clock.time()) / clock.time_step() - 1e-6));
-    };
-    unsigned int total = clock.n_steps();
-    const auto last_fluid_alone_step = static_cast<unsigned int>(
-      std::min<double>(total, std::floor(prm.coupling.start_time / clock.time_step() + 1e-9)));
-    Progress progress;
-    if (result.n_coupled_steps > 0) // restarted in the coupled phase
-      progress.new_phase(clock.step());
-    unsigned int halvings = 0; // of the present time step
-    while (!clock.at_end())
-    {
-      const unsigned int step = clock.step() + 1;
-      capture_step_start();
-      unsigned int iterations = 0;
-      Timer step_timer;
-      try
-      {
-        iterations = solve_time_step();
-      }
-      catch (const std::exception& e)
-      {
-        // Back to the last converged state: tried again with half the time step, or written.
-        const double dt = clock.time_step();
-        return_to_step_start();
-        if (halvings < max_halvings)
-        {
-          ++halvings;
-          clock.set_time_step(dt / 2);
-          pcout << "fvfsi: FSI time step " << step << " with dt = " << dt << " s failed ("
-                << e.what() << ")\nfvfsi: trying it again with dt = " << dt / 2
-                << " s (Time/Time step control: halving " << halvings << " of " << max_halvings
-                << ")\n";
-          continue;
-        }
-        output_results();
-        write_checkpoint();
-        pcout << "fvfsi: FSI run stopped at time step " << step << "; written: the last converged "
-              << "state (t = " << clock.time() << " s) as VTU and a checkpoint (continue with "
-              << "Restart from = " << output_directory << "); fsi_history.txt holds every "
-              << "converged time step\n";
-        throw;
-      }
-      if (halvings > 0)
-        total = steps_to_end();
-      halvings = 0;
-      result.n_time_steps = step;
-      if (iterations > 0)
-        result.coupled_wall_seconds += step_timer.wall_time();
-      if (iterations > 0 && result.n_coupled_steps == 0)
-        progress.new_phase(step); // coupled steps cost more: estimate from them alone
-      result.n_coupled_steps += iterations > 0;
-      result.total_coupling_iterations += iterations;
-      result.max_coupling_iterations = std::max(result.max_coupling_iterations, iterations);
-      if (step % fluid_scene_parameters.progress_interval == 0 || clock.at_end())
-      {
-        pcout << "fvfsi: FSI step " << step << "/" << total << ", t = " << clock.time() << " s, ";
-        if (iterations > 0)
-          pcout << iterations << " coupling iterations (mean " << std::setprecision(3)
-                << result.mean_coupling_iterations() << ")";
-        else
-          pcout << "fluid alone (before Coupling/Start time), "
-                << progress.elapsed_and_until(step, last_fluid_alone_step) << " (coupled steps "
-                << "cost more: the time left follows from them)";
-        if (iterations > 0)
-          pcout << ", " << progress.elapsed_and_left(step, total);
-        pcout << "\n" << std::setprecision(6);
-      }
-      if (fluid_scene_parameters.output_interval > 0 &&
-          step % fluid_scene_parameters.output_interval == 0)
-        output_results();
-      if (checkpoints.interval > 0 && step % checkpoints.interval == 0)
-        write_checkpoint();
-    }
-    if (fluid_scene_parameters.output_interval == 0)
-      output_results();
-    timer.print_summary();
-    print_result();
   }
 
   template <int dim>

@@ -1,9 +1,11 @@
-// The steady FSI path of the scene: its solve, its history line per coupling iteration, and its
-// state files (io/point_values.h), written at the end of a steady run and read by a run on
+// The steady FSI path of the scene: its run, its solve, its history line per coupling iteration,
+// and its state files (io/point_values.h), written at the end of a steady run and read by a run on
 // another mesh as its start (`Initial state from`, mesh sequencing). The rest of the scene is in
 // fsi_scene.cc.
 #include <fvfsi/io/point_values.h>
 #include <fvfsi/scenes/fsi_scene.h>
+
+#include <stdexcept>
 
 namespace fvfsi
 {
@@ -29,6 +31,22 @@ namespace fvfsi
       return t;
     }
   } // namespace
+
+  template <int dim>
+  void FsiScene<dim>::run_steady()
+  {
+    if (checkpoints.interval > 0 || !checkpoints.restart_from.empty())
+      throw std::runtime_error("FSI: Checkpoint interval and Restart from apply to transient "
+                               "runs; a steady run (Fluid/Transient = false) has no time steps");
+    if (!checkpoints.initial_state_from.empty())
+      start_from_state(checkpoints.initial_state_from);
+    result.total_coupling_iterations = result.max_coupling_iterations = solve_steady();
+    pcout << "fvfsi: FSI steady state after " << result.total_coupling_iterations
+          << " coupling iterations, " << fluid->pseudo_steps() << " fluid pseudo steps, "
+          << result.solid_outer_iterations << " solid outer iterations\n";
+    output_results();
+    write_state();
+  }
 
   template <int dim>
   unsigned int FsiScene<dim>::solve_steady()
@@ -119,10 +137,12 @@ namespace fvfsi
   }
 
   // The members defined here (the class itself is instantiated in fsi_scene.cc).
+  template void FsiScene<2>::run_steady();
   template unsigned int FsiScene<2>::solve_steady();
   template void FsiScene<2>::record_steady_iteration(unsigned int, double);
   template void FsiScene<2>::write_state() const;
   template void FsiScene<2>::start_from_state(const std::string&);
+  template void FsiScene<3>::run_steady();
   template unsigned int FsiScene<3>::solve_steady();
   template void FsiScene<3>::record_steady_iteration(unsigned int, double);
   template void FsiScene<3>::write_state() const;

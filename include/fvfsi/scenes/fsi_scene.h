@@ -39,6 +39,7 @@
 #include <fvfsi/scenes/solid_scene.h>
 #include <fvfsi/solid/solid_solver.h>
 
+#include <exception>
 #include <memory>
 #include <optional>
 #include <string>
@@ -46,6 +47,8 @@
 
 namespace fvfsi
 {
+  class Progress;
+
   /// The FSI scene's own parameters: the coupling (`subsection Coupling`: interface patches and
   /// iteration).
   struct FsiSceneParameters
@@ -114,6 +117,21 @@ namespace fvfsi
     void make_grids();
     void make_interface();
     void make_output();
+    /// The meshes' sizes, the interface and the coupling method, for the log.
+    void print_set_up() const;
+    /// Steady: the coupled steady state, its output and state files (fsi_scene_steady.cc).
+    void run_steady();
+    /// Transient: the time loop (fsi_scene_time_loop.cc).
+    void run_transient();
+    /// A failed time step: back to its start, then true with the time step halved (Time/Time
+    /// step control), or, the halvings spent, false with the last converged state written.
+    bool halve_time_step(unsigned int step, unsigned int& halvings, const std::exception& failure);
+    /// Count a converged time step and its coupling iterations in the results.
+    void count_time_step(unsigned int step, unsigned int iterations, double wall_seconds,
+                         Progress& progress);
+    /// The progress line of a time step (every Fluid scene/Progress interval steps).
+    void print_progress(unsigned int step, unsigned int total, unsigned int iterations,
+                        unsigned int last_fluid_alone_step, const Progress& progress) const;
     /// Checkpoints (io/checkpoint.h): the fluid mesh with its reference and current vertex
     /// positions, the fluid, mesh-motion and solid states, and the clock, the interface
     /// displacements, the coupling's columns, the results so far and the output records.
