@@ -6,7 +6,9 @@
 #include <fvfsi/io/progress.h>
 #include <fvfsi/scenes/fsi_scene.h>
 
+#include <algorithm>
 #include <cmath>
+#include <exception>
 #include <iomanip>
 
 namespace fvfsi
