@@ -73,6 +73,12 @@ namespace fvfsi
     return limit > 0 ? std::min(n, limit) : n;
   }
 
+  unsigned int TimeControl::last_step() const
+  {
+    const auto n = step_number + static_cast<unsigned int>(std::ceil((end - t) / next_dt - 1e-6));
+    return limit > 0 ? std::min(n, limit) : n;
+  }
+
   std::string TimeControl::step_name() const
   {
     std::ostringstream name;

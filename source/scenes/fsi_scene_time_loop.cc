@@ -42,8 +42,7 @@ namespace fvfsi
         throw;
       }
       if (halvings > 0) // the steps to the end time at the present dt
-        total = clock.step() + static_cast<unsigned int>(std::ceil(
-                                 (clock.end_time() - clock.time()) / clock.time_step() - 1e-6));
+        total = clock.last_step();
       halvings = 0;
       count_time_step(step, iterations, step_timer.wall_time(), progress);
       if (step % fluid_scene_parameters.progress_interval == 0 || clock.at_end())

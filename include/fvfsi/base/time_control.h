@@ -83,6 +83,9 @@ namespace fvfsi
     double end_time() const { return end; }
     /// Steps from 0 to the end time with the initial dt (at most the step limit).
     unsigned int n_steps() const;
+    /// The number of the step that reaches the end time if dt stays what it is now (at most the
+    /// step limit): n_steps() once the time step has changed during a run.
+    unsigned int last_step() const;
     /// True once t has reached the end time (to a millionth of a step), or the step limit.
     bool at_end() const { return t >= end - 1e-6 * dt || step_limit_reached(step_number); }
     /// True if iteration or step `k` is the last one the step limit (--steps) allows.
