@@ -67,15 +67,11 @@ namespace fvfsi
     ++step_number;
   }
 
-  unsigned int TimeControl::n_steps() const
-  {
-    const auto n = static_cast<unsigned int>(std::round(end / next_dt));
-    return limit > 0 ? std::min(n, limit) : n;
-  }
-
   unsigned int TimeControl::last_step() const
   {
-    const auto n = step_number + static_cast<unsigned int>(std::ceil((end - t) / next_dt - 1e-6));
+    // k more steps of next_dt reach the end time when t + k next_dt >= end - 1e-6 next_dt.
+    const double steps_left = std::max(0.0, std::ceil((end - t) / next_dt - 1e-6));
+    const auto n = step_number + static_cast<unsigned int>(steps_left);
     return limit > 0 ? std::min(n, limit) : n;
   }
 

@@ -233,7 +233,7 @@ namespace fvfsi
   template <int dim>
   void FluidScene<dim>::run_transient()
   {
-    const unsigned int total = clock.n_steps();
+    const unsigned int total = clock.last_step();
     const auto mesh_state = [this](MeshArchive<dim>& a) { checkpoint_state(a); };
     const auto global_state = [this](GlobalArchive& a) { checkpoint_state(a); };
     Progress progress;

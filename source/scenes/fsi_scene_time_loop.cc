@@ -18,7 +18,7 @@ namespace fvfsi
   template <int dim>
   void FsiScene<dim>::run_transient()
   {
-    unsigned int total = clock.n_steps();
+    unsigned int total = clock.last_step();
     const auto last_fluid_alone_step = static_cast<unsigned int>(
       std::min<double>(total, std::floor(prm.coupling.start_time / clock.time_step() + 1e-9)));
     Progress progress;

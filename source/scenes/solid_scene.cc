@@ -137,7 +137,7 @@ namespace fvfsi
           << selection_name(SolidParameters::model_names, solid_parameters.model) << ", variant "
           << selection_name(SolidParameters::variant_names, solid_parameters.variant) << "\n";
     // Steady: one solve (at t = dt, for loads that depend on t).
-    const unsigned int n_steps = solid_parameters.transient ? clock.n_steps() : 1;
+    const unsigned int n_steps = solid_parameters.transient ? clock.last_step() : 1;
     const auto mesh_state = [this](MeshArchive<dim>& a) { solid->checkpoint(a); };
     const auto global_state = [this](GlobalArchive& a) { a& result; };
     if (!solid_parameters.transient && (this->restarting() || this->checkpoints.interval > 0))

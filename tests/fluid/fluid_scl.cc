@@ -59,7 +59,7 @@ std::array<double, 3> run(const bool swept_volumes)
   std::array<double, 3> error{};
   const double dt = clock.time_step();
   std::vector<double> V_old = fv.cell_volume, V_old2 = fv.cell_volume;
-  const unsigned int n_steps = clock.n_steps();
+  const unsigned int n_steps = clock.last_step();
   for (unsigned int step = 0; step < n_steps; ++step)
   {
     clock.advance();

@@ -327,7 +327,7 @@ Outcome PressureColumn::run(const unsigned int traced)
   traced_step = traced;
   make_grids();
   make_interface();
-  const unsigned int n_steps = clock.n_steps();
+  const unsigned int n_steps = clock.last_step();
   try
   {
     for (unsigned int step = 1; step <= n_steps; ++step)

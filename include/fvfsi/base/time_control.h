@@ -81,10 +81,10 @@ namespace fvfsi
     double previous_time_step() const { return dt_old; } ///< t^n - t^(n-1) [s] (0: none)
     unsigned int step() const { return step_number; }    ///< 0 before the first advance()
     double end_time() const { return end; }
-    /// Steps from 0 to the end time with the initial dt (at most the step limit).
-    unsigned int n_steps() const;
-    /// The number of the step that reaches the end time if dt stays what it is now (at most the
-    /// step limit): n_steps() once the time step has changed during a run.
+    /// The number of the step that reaches the end time (to a millionth of a step, as at_end()
+    /// counts) if dt stays what it is now, at most the step limit: before the first step the
+    /// number of steps of the run (0.1 s with dt = 0.03 s: 4, the last one ending at 0.12 s),
+    /// and the right total also after a restart or a halved time step.
     unsigned int last_step() const;
     /// True once t has reached the end time (to a millionth of a step), or the step limit.
     bool at_end() const { return t >= end - 1e-6 * dt || step_limit_reached(step_number); }
