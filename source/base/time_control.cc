@@ -16,7 +16,10 @@ namespace fvfsi
       "dt [s] of a transient run: the fluid, the solid, the mesh motion and the "
       "coupling share it (a steady solver ignores it; a steady solid takes one step).",
       PositiveDouble(1e10));
-    prm.add_parameter("End time", end_time, "[s] of a transient run.",
+    prm.add_parameter("End time", end_time,
+                      "[s] of a transient run: it takes steps until t reaches the end time, so "
+                      "the last step ends past it when the end time is not a whole number of "
+                      "steps (0.1 s with dt = 0.03 s: 4 steps, to 0.12 s).",
                       dealii::Patterns::Double(0, 1e10));
     prm.add_parameter("Time step control", halvings,
                       "FSI: how many times a failed time step (a linear solve that fails, a "
