@@ -136,8 +136,6 @@ namespace fvfsi
     pcout << "fvfsi: solid " << dim << "D, " << fv->n_global_cells() << " cells, "
           << selection_name(SolidParameters::model_names, solid_parameters.model) << ", variant "
           << selection_name(SolidParameters::variant_names, solid_parameters.variant) << "\n";
-    // Steady: one solve (at t = dt, for loads that depend on t).
-    const unsigned int n_steps = solid_parameters.transient ? clock.last_step() : 1;
     const auto mesh_state = [this](MeshArchive<dim>& a) { solid->checkpoint(a); };
     const auto global_state = [this](GlobalArchive& a) { a& result; };
     if (!solid_parameters.transient && (this->restarting() || this->checkpoints.interval > 0))
@@ -145,6 +143,9 @@ namespace fvfsi
                                "(Solid/Transient = true)");
     if (this->restarting())
       this->restore_checkpoint(mesh_state, global_state);
+    // Counted from the restored clock (its time and dt) on a restart. Steady: one solve (at
+    // t = dt, for loads that depend on t).
+    const unsigned int n_steps = solid_parameters.transient ? clock.last_step() : 1;
     Progress progress;
     progress.new_phase(clock.step()); // a restarted run: the time left from its own steps
     for (unsigned int step = clock.step() + 1; step <= n_steps; ++step)
