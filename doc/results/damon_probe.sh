@@ -3,7 +3,7 @@
 # accessed bits of physical pages every 0.5 s and pages out cold ones) disturb the
 # two-rank runs (doc/results/performance.md, section 8, "A coarse solve on both ranks, coupled
 # aggregation and the guest's page reclaim")? The first 40 steps of prm/turek_hron_fsi3.prm (10
-# steps of the fluid alone, 30 coupled), REPEATS rounds; each round runs one rank on core 0 and two
+# steps of the fluid alone, 30 coupled), rounds FIRST_ROUND to LAST_ROUND; each runs one rank on core 0 and two
 # ranks with kdamond on, then the same two with it off. Prints each run's coupled-step seconds
 # and geometry section (local loops: the check on the moment) and the efficiency T1 / (2 T2) of
 # every round in each state. Needs root and a kernel with DAMON's sysfs interface; leaves kdamond
