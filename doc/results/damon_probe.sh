@@ -3,18 +3,21 @@
 # accessed bits of physical pages every 0.5 s and pages out cold ones) disturb the
 # two-rank runs (doc/results/performance.md, section 8, "A coarse solve on both ranks, coupled
 # aggregation and the guest's page reclaim")? The first 40 steps of prm/turek_hron_fsi3.prm (10
-# steps of the fluid alone, 30 coupled), rounds FIRST_ROUND to LAST_ROUND; each runs one rank on core 0 and two
-# ranks with kdamond on, then the same two with it off. Prints each run's coupled-step seconds
-# and geometry section (local loops: the check on the moment) and the efficiency T1 / (2 T2) of
-# every round in each state. Needs root and a kernel with DAMON's sysfs interface; leaves kdamond
-# on at the end. A completed run in RUN_DIRECTORY is not run again.
+# steps of the fluid alone, 30 coupled), rounds FIRST_ROUND to LAST_ROUND; each runs one rank on
+# core 0 and two ranks with kdamond on, then the same two with it off. Prints each run's
+# coupled-step seconds and geometry section (local loops: the check on the moment) and the
+# efficiency T1 / (2 T2) of every round in each state. Needs root and a kernel with DAMON's sysfs
+# interface; leaves kdamond on at the end. A completed run in RUN_DIRECTORY is not run again.
 #   usage: doc/results/damon_probe.sh BUILD RUN_DIRECTORY FIRST_ROUND LAST_ROUND
 #   (BUILD holds `fvfsi` and `libfvfsi_lib.so`, e.g. build/)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 dir=$1 runs=$2 first=$3 last=$4
 state=/sys/kernel/mm/damon/admin/kdamonds/0/state
-[[ -w $state ]] || { echo "damon_probe.sh: $state is not writable (no DAMON, or not root)" >&2; exit 1; }
+if [[ ! -w $state ]]; then
+  echo "damon_probe.sh: $state is not writable (no DAMON, or not root)" >&2
+  exit 1
+fi
 mkdir -p "$runs"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 trap 'echo on > $state 2> /dev/null || true' EXIT
