@@ -142,6 +142,17 @@ restart_and_full(const Case& c, const std::vector<std::string>& extra, MPI_Comm 
   return {read_table(b + "/" + c.history), read_table(full + "/" + c.history)};
 }
 
+/// Prints the difference of two history tables to the log and writes to `out`, on rank 0, whether
+/// it is within 1e-12 (the same arithmetic): "`claim` (1e-12): yes".
+void report_equal(std::ostream& out, const unsigned int rank, const std::string& claim,
+                  const double difference)
+{
+  if (rank != 0)
+    return;
+  std::printf("%s: max relative difference %.2e\n", claim.c_str(), difference);
+  out << claim << " (1e-12): " << yes_no(difference <= 1e-12) << "\n";
+}
+
 int main(int argc, char** argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -152,14 +163,8 @@ int main(int argc, char** argv)
   for (const Case* c : {&fsi, &fluid, &solid})
   {
     const auto [restarted, full] = restart_and_full(*c, {}, MPI_COMM_WORLD, c->name);
-    const double difference = table_difference(restarted, full);
-    if (rank == 0)
-    {
-      std::printf("%s: restarted - uninterrupted, max relative difference %.2e\n", c->name.c_str(),
-                  difference);
-      out << c->name << ": the restarted run's history equals the uninterrupted one (1e-12): "
-          << yes_no(difference <= 1e-12) << "\n";
-    }
+    report_equal(out, rank, c->name + ": the restarted run's history equals the uninterrupted one",
+                 table_difference(restarted, full));
   }
 
   // A restart continues at the checkpoint's time step whatever the .prm file sets: the solid's B
@@ -169,16 +174,11 @@ int main(int argc, char** argv)
   {
     run(solid, 10, {"Time/Time step=0.02", "Restart from=out_solid_A"}, MPI_COMM_WORLD,
         "out_solid_dt");
-    const double difference = table_difference(read_table("out_solid_dt/" + solid.history),
-                                               read_table("out_solid_C/" + solid.history));
-    if (rank == 0)
-    {
-      std::printf("solid, restarted with another dt in the .prm: max relative difference %.2e\n",
-                  difference);
-      out << "solid: a restart whose .prm sets dt = 0.02 s continues at the checkpoint's 0.01 s to "
-             "the end time and equals the uninterrupted run (1e-12): "
-          << yes_no(difference <= 1e-12) << "\n";
-    }
+    report_equal(out, rank,
+                 "solid: a restart whose .prm sets dt = 0.02 s continues at the checkpoint's "
+                 "0.01 s to the end time and equals the uninterrupted run",
+                 table_difference(read_table("out_solid_dt/" + solid.history),
+                                  read_table("out_solid_C/" + solid.history)));
   }
 
   // The .pvd of the restarted FSI run: A's files first.
