@@ -9,11 +9,12 @@
 #   usage: doc/results/bsp_ceiling.sh [BUILD_DIRECTORY [REPEATS]]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source doc/results/common.sh
 build=${1:-build}
 repeats=${2:-5}
 cmake --build "$build" --target bsp_ceiling > /dev/null
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load: $(cut -d' ' -f1-3 /proc/loadavg); commit $(git rev-parse --short HEAD); $(date -u +%FT%TZ)"
+machine_line "commit $(git rev-parse --short HEAD)"
 echo "| sweeps per meeting | one rank [s] (runs) | two ranks [s] (runs) | medians | efficiency |"
 echo "|---|---|---|---|---|"
 for sweeps in 1 4 16; do

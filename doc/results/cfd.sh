@@ -10,6 +10,7 @@
 set -uo pipefail
 script_dir=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 repo=$(cd "$script_dir/../.." && pwd)
+source "$repo/doc/results/common.sh"
 build=${1:-$repo/build}
 shift || true
 sections=("$@")
@@ -17,7 +18,7 @@ sections=("$@")
 runs=$build/cfd_runs
 mkdir -p "$runs"
 fvfsi=$build/fvfsi
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load: $(cut -d' ' -f1-3 /proc/loadavg)"
+machine_line
 
 field() { /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(eval(sys.argv[2]))" "$@"; }
 

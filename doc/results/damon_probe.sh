@@ -12,6 +12,7 @@
 #   (BUILD holds `fvfsi` and `libfvfsi_lib.so`, e.g. build/)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source doc/results/common.sh
 dir=$1 runs=$2 first=$3 last=$4
 state=/sys/kernel/mm/damon/admin/kdamonds/0/state
 if [[ ! -w $state ]]; then
@@ -21,7 +22,7 @@ fi
 mkdir -p "$runs"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 trap 'echo on > $state 2> /dev/null || true' EXIT
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); $(date -u +%FT%TZ)"
+machine_line
 for r in $(seq "$first" "$last"); do
   for st in on off; do
     [[ $(cat $state) == "$st" ]] || echo $st > $state
@@ -29,9 +30,8 @@ for r in $(seq "$first" "$last"); do
       out=$runs/${st}_${np}_$r
       [[ -f $out/summary.json ]] && continue
       if [[ $np == 1 ]]; then launch=(taskset -c 0); else launch=(mpirun -np 2); fi
-      LD_LIBRARY_PATH=$dir "${launch[@]}" "$dir/fvfsi" prm/turek_hron_fsi3.prm \
-        --set "Coupling/Start time=0.0075" --set "Time/End time=0.03" \
-        --set "Fluid scene/Output interval=0" --set "Output directory=$out" > "$out.log" 2>&1
+      fsi3_first_steps 0.03 "$out"
+      LD_LIBRARY_PATH=$dir "${launch[@]}" "$dir/fvfsi" "${fsi3_case[@]}" > "$out.log" 2>&1
     done
   done
 done

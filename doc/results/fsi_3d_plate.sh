@@ -13,12 +13,13 @@
 #   usage: doc/results/fsi_3d_plate.sh [path/to/fvfsi [RUN_DIRECTORY]]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source doc/results/common.sh
 python=${PYTHON:-/usr/bin/python3}
 fvfsi=${1:-build/fvfsi}
 runs=${2:-build/fsi_3d_plate_runs}
 mkdir -p "$runs"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load: $(cut -d' ' -f1-3 /proc/loadavg); commit $(git rev-parse --short HEAD)"
+machine_line "commit $(git rev-parse --short HEAD)"
 
 # run NAME NP PRM [SET...]: PRM on NP ranks with the --set overrides into $runs/NAME, then its
 # record $runs/NAME.json.

@@ -8,10 +8,11 @@
 #   usage: doc/results/fsi_3d_tube_stability.sh [path/to/fvfsi [RUN_DIRECTORY]]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source doc/results/common.sh
 fvfsi=${1:-build/fvfsi}
 runs=${2:-build/fsi_3d_stability_runs}
 mkdir -p "$runs"
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); commit $(git rev-parse --short HEAD)"
+machine_line "commit $(git rev-parse --short HEAD)"
 coarse=("Mesh/Global refinements=1" "Solid mesh/Global refinements=1")
 vertex=("Coupling/Face average displacement=false")
 

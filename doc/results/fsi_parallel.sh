@@ -21,23 +21,22 @@
 #   usage: doc/results/fsi_parallel.sh [path/to/fvfsi [RUN_DIRECTORY [REPEATS [--set KEY=VALUE ...]]]]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source doc/results/common.sh
 fvfsi=${1:-build/fvfsi}
 runs=${2:-build/fsi_parallel}
 repeats=${3:-3}
 shift $(( $# < 3 ? $# : 3 ))
 mkdir -p "$runs"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load: $(cut -d' ' -f1-3 /proc/loadavg); commit $(git rev-parse --short HEAD)"
-set_args=(--set "Coupling/Start time=0.0075" --set "Time/End time=0.0825"
-          --set "Fluid scene/Output interval=0" "$@")
+machine_line "commit $(git rev-parse --short HEAD)"
 for r in $(seq 1 "$repeats"); do
   for np in 1 2 core1; do
     out=$runs/np${np}_$r
     [[ -f $out/summary.json ]] && grep -q '"completed"' "$out/summary.json" && continue
     launch=(mpirun --oversubscribe -np "$np")
     [[ $np == core1 ]] && launch=(taskset -c 1)
-    "${launch[@]}" "$fvfsi" prm/turek_hron_fsi3.prm "${set_args[@]}" \
-      --set "Output directory=$out" > "$out.log" 2>&1
+    fsi3_first_steps 0.0825 "$out"
+    "${launch[@]}" "$fvfsi" "${fsi3_case[@]}" "$@" > "$out.log" 2>&1
   done
 done
 /usr/bin/python3 - "$runs" "$repeats" <<'PY'

@@ -10,20 +10,20 @@
 #   usage: doc/results/fsi_parallel_ab.sh RUN_DIRECTORY REPEATS BUILD_A BUILD_B [--set ...]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source doc/results/common.sh
 runs=$1 repeats=$2 a=$3 b=$4
 shift 4
 mkdir -p "$runs"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load: $(cut -d' ' -f1-3 /proc/loadavg); $(date -u +%FT%TZ)"
+machine_line
 for r in $(seq 1 "$repeats"); do
   for build in A B; do
     dir=$a; [[ $build == B ]] && dir=$b
     for np in 1 2; do
       out=$runs/${build}_np${np}_$r
       [[ -f $out/summary.json ]] && grep -q '"completed"' "$out/summary.json" && continue
-      LD_LIBRARY_PATH=$dir mpirun -np "$np" "$dir/fvfsi" prm/turek_hron_fsi3.prm \
-        --set "Coupling/Start time=0.0075" --set "Time/End time=0.03" \
-        --set "Fluid scene/Output interval=0" "$@" --set "Output directory=$out" > "$out.log" 2>&1
+      fsi3_first_steps 0.03 "$out"
+      LD_LIBRARY_PATH=$dir mpirun -np "$np" "$dir/fvfsi" "${fsi3_case[@]}" "$@" > "$out.log" 2>&1
     done
   done
 done

@@ -28,6 +28,7 @@
 #          check of the script, e.g. 0.03 --set "Coupling/Start time=0.0075")
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source doc/results/common.sh
 fvfsi=${1:-build/fvfsi}
 runs=${2:-build/fsi_parallel_segments}
 seg=${3:-400}
@@ -38,7 +39,7 @@ dt=0.00075
 mkdir -p "$runs"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 [[ -x $fvfsi ]] || { echo "fsi_parallel_segments.sh: no executable $fvfsi" >&2; exit 1; }
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load: $(cut -d' ' -f1-3 /proc/loadavg); source tree at commit $(git rev-parse --short HEAD); binary $fvfsi"
+machine_line "source tree at commit $(git rev-parse --short HEAD); binary $fvfsi"
 n_steps=$(/usr/bin/python3 -c "import math; print(math.ceil($end / $dt - 1e-6))")
 n_seg=$(( (n_steps + seg - 1) / seg ))
 run() { # run SEGMENT RANKS RESTART_DIRECTORY END_TIME [--set KEY=VALUE ...]

@@ -5,6 +5,8 @@
 # (doc/results/fsi_benchmark.py record: statistics over [T0, T1], errors, cost) and
 # $runs/NAME.png. Needs $fvfsi, $runs and $python; $FVFSI_COMMIT names the commit $fvfsi was
 # built from (default: the tree's), recorded in $runs/NAME/commit.txt.
+source doc/results/common.sh
+
 run_fsi() {
   local case=$1 name=$2 t0=$3 t1=$4
   shift 4
@@ -23,5 +25,5 @@ run_fsi() {
 
 # The machine, for the record.
 machine() {
-  echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load: $(cut -d' ' -f1-3 /proc/loadavg); commit $(git rev-parse --short HEAD)"
+  machine_line "commit $(git rev-parse --short HEAD)"
 }

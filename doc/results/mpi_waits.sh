@@ -8,6 +8,7 @@
 #   usage: doc/results/mpi_waits.sh [path/to/fvfsi [RUN_DIRECTORY]]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source doc/results/common.sh
 fvfsi=$(realpath "${1:-build/fvfsi}")
 runs=$(realpath -m "${2:-build/mpi_waits}")
 mkdir -p "$runs"
@@ -17,9 +18,8 @@ cat > "$runs/wrap.sh" <<WRAP
 exec perf record -q --call-graph dwarf,16384 -F 499 -o $runs/perf.\$OMPI_COMM_WORLD_RANK "\$@"
 WRAP
 chmod +x "$runs/wrap.sh"
-mpirun -np 2 "$runs/wrap.sh" "$fvfsi" prm/turek_hron_fsi3.prm --set "Coupling/Start time=0.0075" \
-  --set "Time/End time=0.03" --set "Fluid scene/Output interval=0" \
-  --set "Output directory=$runs/out" > "$runs/log" 2>&1
+fsi3_first_steps 0.03 "$runs/out"
+mpirun -np 2 "$runs/wrap.sh" "$fvfsi" "${fsi3_case[@]}" > "$runs/log" 2>&1
 for r in 0 1; do perf script -i "$runs/perf.$r" -F ip,sym,dso 2> /dev/null > "$runs/script.$r"; done
 /usr/bin/python3 - "$runs/script.0" "$runs/script.1" <<'PY'
 import collections, re, sys

@@ -10,10 +10,11 @@
 #   (BUILD holds `fvfsi` and `libfvfsi_lib.so`, e.g. build/)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source doc/results/common.sh
 dir=$1 runs=$2 repeats=$3
 mkdir -p "$runs"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); $(date -u +%FT%TZ)"
+machine_line
 for r in $(seq 1 "$repeats"); do
   for mode in one poll yield; do
     out=$runs/${mode}_$r
@@ -23,9 +24,8 @@ for r in $(seq 1 "$repeats"); do
       poll) launch=(mpirun -np 2) ;;
       yield) launch=(mpirun -np 2 --mca mpi_yield_when_idle 1) ;;
     esac
-    LD_LIBRARY_PATH=$dir "${launch[@]}" "$dir/fvfsi" prm/turek_hron_fsi3.prm \
-      --set "Coupling/Start time=0.0075" --set "Time/End time=0.03" \
-      --set "Fluid scene/Output interval=0" --set "Output directory=$out" > "$out.log" 2>&1
+    fsi3_first_steps 0.03 "$out"
+    LD_LIBRARY_PATH=$dir "${launch[@]}" "$dir/fvfsi" "${fsi3_case[@]}" > "$out.log" 2>&1
   done
 done
 /usr/bin/python3 - "$runs" "$repeats" <<'PY'

@@ -10,10 +10,11 @@
 #   usage: doc/results/steady_range.sh [path/to/fvfsi [RUN_DIRECTORY]]
 set -uo pipefail
 cd "$(dirname "$0")/../.."
+source doc/results/common.sh
 fvfsi=${1:-build/fvfsi}
 runs=${2:-build/steady_range}
 mkdir -p "$runs"
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load: $(cut -d' ' -f1-3 /proc/loadavg); commit $(git rev-parse --short HEAD)"
+machine_line "commit $(git rev-parse --short HEAD)"
 echo
 echo "| mesh | Re | cells | pseudo steps | alpha at the end | drag [N/m] | wall [s] | stopped with |"
 echo "|---|---|---|---|---|---|---|---|"

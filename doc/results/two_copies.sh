@@ -20,22 +20,23 @@
 #   usage: doc/results/two_copies.sh [path/to/fvfsi [RUN_DIRECTORY [ROUNDS [END_TIME]]]]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+source doc/results/common.sh
 fvfsi=${1:-build/fvfsi}
 runs=${2:-build/two_copies}
 rounds=${3:-3}
 end_time=${4:-0.03}
 mkdir -p "$runs"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load: $(cut -d' ' -f1-3 /proc/loadavg); commit $(git rev-parse --short HEAD)"
+machine_line "commit $(git rev-parse --short HEAD)"
 run() { # run NAME RANKS|coreN
   [[ -f $runs/$1/summary.json ]] && grep -q '"completed"' "$runs/$1/summary.json" && return
   # One rank without mpirun, on the core named: two `mpirun -np 1` at once would both bind their
   # rank to core 0.
   local launch=(mpirun -np "$2")
   [[ $2 == core* ]] && launch=(taskset -c "${2#core}")
-  "${launch[@]}" "$fvfsi" prm/turek_hron_fsi3.prm --set "Coupling/Start time=0.0075" \
-    --set "Time/End time=$end_time" --set "Fluid scene/Output interval=0" \
-    --set "Output directory=$runs/$1" > "$runs/$1.log" 2>&1
+  local fsi3_case
+  fsi3_first_steps "$end_time" "$runs/$1"
+  "${launch[@]}" "$fvfsi" "${fsi3_case[@]}" > "$runs/$1.log" 2>&1
 }
 for r in $(seq 1 "$rounds"); do
   run "alone_$r" core0

@@ -26,6 +26,7 @@
 #include <fvfsi/scenes/solid_scene.h>
 
 #include "../test_utilities.h"
+#include "fsi_case.h"
 
 #include <algorithm>
 #include <cmath>
@@ -83,13 +84,7 @@ const Case solid = {
   {"Mesh/Generator arguments=20: 2", "Time/Time step=0.01", "Solid scene/Progress interval=100"}};
 
 /// Every solve converged far below 1e-8 (a restart on another number of ranks).
-const std::vector<std::string> tight = {"Fluid momentum solver/Residual reduction=1e-10",
-                                        "Fluid pressure solver/Residual reduction=1e-10",
-                                        "Fluid pressure solver/Corrector residual reduction=0",
-                                        "Mesh motion solver/Residual reduction=1e-10",
-                                        "Solid linear solver/Residual reduction=1e-10",
-                                        "Solid/Outer tolerance=1e-13",
-                                        "Coupling/Tolerance=1e-9"};
+const std::vector<std::string> tight = converged_solves("1e-10", "1e-9");
 
 /// Run `c` for `steps` time steps on `comm` into `directory` with `extra` overrides.
 void run(const Case& c, const unsigned int steps, const std::vector<std::string>& extra,

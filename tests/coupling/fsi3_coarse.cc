@@ -55,13 +55,7 @@ const std::vector<std::string> coarse = {"Mesh/Generator arguments=12",
                                          "Fluid scene/Probes=P: 0.7, 0.2"};
 
 /// For (c): every solve converged far below 1e-8.
-const std::vector<std::string> tight = {"Fluid momentum solver/Residual reduction=1e-10",
-                                        "Fluid pressure solver/Residual reduction=1e-10",
-                                        "Fluid pressure solver/Corrector residual reduction=0",
-                                        "Mesh motion solver/Residual reduction=1e-10",
-                                        "Solid linear solver/Residual reduction=1e-10",
-                                        "Solid/Outer tolerance=1e-13",
-                                        "Coupling/Tolerance=1e-9"};
+const std::vector<std::string> tight = converged_solves("1e-10", "1e-9");
 
 /// The columns t, coupling_iterations, residual, drag, lift, ux_A, uy_A, Ux_P, Uy_P, p_P,
 /// min_volume_ratio, dt of fsi_history.txt.

@@ -1,5 +1,6 @@
 #pragma once
-// Running a shipped FSI case in a coupling test (fsi3_coarse, tube_coarse).
+// Running a shipped FSI case in a coupling test (fsi3_coarse, tube_coarse, thick_plate_coarse,
+// checkpoint_restart).
 
 #include <fvfsi/scenes/fsi_scene.h>
 
@@ -33,5 +34,22 @@ namespace fvfsi_test
       return e.what();
     }
     return "";
+  }
+
+  /// The overrides that converge every solve of a transient FSI run far below what a comparison
+  /// of partitions asks: each linear solve, the pressure's first correctors too, by the relative
+  /// `reduction`, the solid's outer iterations to 1e-13, the coupling to `coupling_tolerance`.
+  /// The partition changes the preconditioners, so runs on different numbers of ranks agree to
+  /// 1e-8 only where every solve stops well below it.
+  inline std::vector<std::string> converged_solves(const std::string& reduction,
+                                                   const std::string& coupling_tolerance)
+  {
+    return {"Fluid momentum solver/Residual reduction=" + reduction,
+            "Fluid pressure solver/Residual reduction=" + reduction,
+            "Fluid pressure solver/Corrector residual reduction=0",
+            "Mesh motion solver/Residual reduction=" + reduction,
+            "Solid linear solver/Residual reduction=" + reduction,
+            "Solid/Outer tolerance=1e-13",
+            "Coupling/Tolerance=" + coupling_tolerance};
   }
 } // namespace fvfsi_test

@@ -1,0 +1,19 @@
+# Shared by the scripts of doc/results (sourced, not run; their working directory is the
+# project root).
+
+# machine_line [MORE]: the machine a measurement ran on, for the record: cores, CPU model, load
+# average, the time (UTC), then MORE (e.g. the commit of the binary).
+machine_line() {
+  echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs);" \
+    "load: $(cut -d' ' -f1-3 /proc/loadavg); $(date -u +%FT%TZ)${1:+; $1}"
+}
+
+# fsi3_first_steps END_TIME OUTPUT_DIRECTORY: sets the array fsi3_case to the arguments of
+# fvfsi that run the first steps of prm/turek_hron_fsi3.prm as shipped (fluid n = 60: 47 160
+# cells, flag 123 x 6: 738 cells, dt = 0.75 ms): the fluid alone for 10 steps (Coupling/Start
+# time = 0.0075 s), then coupled up to END_TIME (0.03: 40 steps; 0.0825: 110), no field output,
+# the results into OUTPUT_DIRECTORY. The probes of performance.md section 8 all run this case.
+fsi3_first_steps() {
+  fsi3_case=(prm/turek_hron_fsi3.prm --set "Coupling/Start time=0.0075" --set "Time/End time=$1"
+             --set "Fluid scene/Output interval=0" --set "Output directory=$2")
+}
