@@ -1,5 +1,6 @@
 #pragma once
-// Running a shipped FSI case in a coupling test (fsi3_coarse, tube_coarse, thick_plate_coarse,
+// Running a shipped FSI case in a coupling test (fsi3_coarse, tube_coarse, thick_plate_coarse),
+// and the overrides that converge its solves for a comparison of partitions (also
 // checkpoint_restart).
 
 #include <fvfsi/scenes/fsi_scene.h>
