@@ -8,6 +8,12 @@ machine_line() {
     "load: $(cut -d' ' -f1-3 /proc/loadavg); $(date -u +%FT%TZ)${1:+; $1}"
 }
 
+# completed RUN_DIRECTORY: true if a run wrote RUN_DIRECTORY/summary.json with status "completed"
+# (a failed run writes "failed"), so that a study resumes where it stopped.
+completed() {
+  grep -qs '"completed"' "$1/summary.json"
+}
+
 # fsi3_first_steps END_TIME OUTPUT_DIRECTORY: sets the array fsi3_case to the arguments of
 # fvfsi that run the first steps of prm/turek_hron_fsi3.prm as shipped (fluid n = 60: 47 160
 # cells, flag 123 x 6: 738 cells, dt = 0.75 ms): the fluid alone for 10 steps (Coupling/Start

@@ -28,7 +28,7 @@ for r in $(seq "$first" "$last"); do
     [[ $(cat $state) == "$st" ]] || echo $st > $state
     for np in 1 2; do
       out=$runs/${st}_${np}_$r
-      [[ -f $out/summary.json ]] && continue
+      completed "$out" && continue
       if [[ $np == 1 ]]; then launch=(taskset -c 0); else launch=(mpirun -np 2); fi
       fsi3_first_steps 0.03 "$out"
       LD_LIBRARY_PATH=$dir "${launch[@]}" "$dir/fvfsi" "${fsi3_case[@]}" > "$out.log" 2>&1

@@ -27,7 +27,7 @@ run() {
   local name=$1 np=$2 prm=$3 out=$runs/$1 args=()
   shift 3
   for s in "$@"; do args+=(--set "$s"); done
-  if ! { [[ -f $out/summary.json ]] && grep -q '"completed"' "$out/summary.json"; }; then
+  if ! completed "$out"; then
     echo "$(date -u +%H:%M) $name: running (log $out.log)"
     mkdir -p "$out" && git rev-parse --short HEAD > "$out/commit.txt"
     mpirun --oversubscribe -np "$np" "$fvfsi" "$prm" "${args[@]}" \

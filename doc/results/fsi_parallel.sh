@@ -32,7 +32,7 @@ machine_line "commit $(git rev-parse --short HEAD)"
 for r in $(seq 1 "$repeats"); do
   for np in 1 2 core1; do
     out=$runs/np${np}_$r
-    [[ -f $out/summary.json ]] && grep -q '"completed"' "$out/summary.json" && continue
+    completed "$out" && continue
     launch=(mpirun --oversubscribe -np "$np")
     [[ $np == core1 ]] && launch=(taskset -c 1)
     fsi3_first_steps 0.0825 "$out"

@@ -21,7 +21,7 @@ for r in $(seq 1 "$repeats"); do
     dir=$a; [[ $build == B ]] && dir=$b
     for np in 1 2; do
       out=$runs/${build}_np${np}_$r
-      [[ -f $out/summary.json ]] && grep -q '"completed"' "$out/summary.json" && continue
+      completed "$out" && continue
       fsi3_first_steps 0.03 "$out"
       LD_LIBRARY_PATH=$dir mpirun -np "$np" "$dir/fvfsi" "${fsi3_case[@]}" "$@" > "$out.log" 2>&1
     done

@@ -46,7 +46,7 @@ run() { # run SEGMENT RANKS RESTART_DIRECTORY END_TIME [--set KEY=VALUE ...]
   local k=$1 np=$2 from=$3 end_k=$4
   shift 4
   local out=$runs/seg${k}_np$np
-  [[ -f $out/summary.json ]] && grep -q '"completed"' "$out/summary.json" && return
+  completed "$out" && return
   local launch=(mpirun -np 2)
   [[ $np == 1 ]] && launch=(taskset -c 0)
   local restart=()

@@ -12,7 +12,7 @@ run_fsi() {
   shift 4
   local out=$runs/$name args=()
   for s in "$@"; do args+=(--set "$s"); done
-  if [[ ! -f $out/summary.json ]] || grep -q '"status": "failed"' "$out/summary.json"; then
+  if ! completed "$out"; then
     echo "$(date -u +%H:%M) $case $name: running (log $out.log)"
     mkdir -p "$out" && echo "${FVFSI_COMMIT:-$(git rev-parse --short HEAD)}" > "$out/commit.txt"
     "$fvfsi" "prm/turek_hron_$case.prm" "${args[@]}" --set "Fluid scene/Output interval=0" \

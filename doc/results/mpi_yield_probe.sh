@@ -18,7 +18,7 @@ machine_line
 for r in $(seq 1 "$repeats"); do
   for mode in one poll yield; do
     out=$runs/${mode}_$r
-    [[ -f $out/summary.json ]] && continue
+    completed "$out" && continue
     case $mode in
       one) launch=(taskset -c 0) ;;
       poll) launch=(mpirun -np 2) ;;

@@ -29,7 +29,7 @@ mkdir -p "$runs"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 machine_line "commit $(git rev-parse --short HEAD)"
 run() { # run NAME RANKS|coreN
-  [[ -f $runs/$1/summary.json ]] && grep -q '"completed"' "$runs/$1/summary.json" && return
+  completed "$runs/$1" && return
   # One rank without mpirun, on the core named: two `mpirun -np 1` at once would both bind their
   # rank to core 0.
   local launch=(mpirun -np "$2")
