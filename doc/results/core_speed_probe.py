@@ -2,7 +2,7 @@
 """Summarise doc/results/core_speed_probe.sh's two chunk logs (core 0, core 1).
 
 Per WINDOW seconds, each core's speed is the chunks it finished in the window over the most any
-window of either core finished (1.00: the machine's best moment). Printed: one line per window,
+window of either core finished (1.00: the best ten seconds, by default, of this probe). Printed: one line per window,
 then the quantiles of the slower core's speed (what a two-rank run, which waits for its slower
 rank, can reach), how many windows had one core more than 5% behind the other, and the longest
 stretch of consecutive windows in which the same core was that far behind (how long an imbalance

@@ -7,7 +7,8 @@
 # do the same work on both; the samples each rank spends in them are its core's time for that
 # work, and their ratio (rank 1 / rank 0) is how much slower core 1 ran than core 0 (1.00: the
 # same speed), whatever the ranks waited. Per round: the two-rank run's coupled-step wall time,
-# each rank's samples in those loops and in Open MPI (mostly waiting), and the ratio.
+# each rank's samples in those loops and in Open MPI (mostly waiting), and the ratio. Needs perf
+# (Debian: linux-perf) and two free cores.
 #   usage: doc/results/rank_speeds.sh [path/to/fvfsi [RUN_DIRECTORY [ROUNDS]]]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
