@@ -14,6 +14,18 @@ completed() {
   grep -qs '"completed"' "$1/summary.json"
 }
 
+# perf_each_rank WRAPPER PERF_RECORD_OPTION...: writes the script WRAPPER, which runs its
+# arguments after the first under `perf record PERF_RECORD_OPTION... -o DIRECTORY/perf.RANK`
+# (RANK: Open MPI's rank, DIRECTORY: its first argument), so that `mpirun -np 2 WRAPPER DIRECTORY
+# fvfsi ...` profiles each rank on its own.
+perf_each_rank() {
+  local wrapper=$1
+  shift
+  printf '#!/bin/bash\nout=$1\nshift\nexec perf record %s -o "$out/perf.$OMPI_COMM_WORLD_RANK" "$@"\n' \
+    "$*" > "$wrapper"
+  chmod +x "$wrapper"
+}
+
 # fsi3_first_steps END_TIME OUTPUT_DIRECTORY: sets the array fsi3_case to the arguments of
 # fvfsi that run the first steps of prm/turek_hron_fsi3.prm as shipped (fluid n = 60: 47 160
 # cells, flag 123 x 6: 738 cells, dt = 0.75 ms): the fluid alone for 10 steps (Coupling/Start

@@ -8,6 +8,7 @@ rank, can reach), how many windows had one core more than 5% behind the other, a
 stretch of consecutive windows in which the same core was that far behind (how long an imbalance
 lasts: a partition that follows the cores' speeds needs it to last).
 usage: core_speed_probe.py CORE0_LOG CORE1_LOG [WINDOW]"""
+import statistics
 import sys
 
 
@@ -22,11 +23,6 @@ def chunks_per_window(path, window):
     return counts
 
 
-def quantile(values, q):
-    s = sorted(values)
-    return s[min(len(s) - 1, int(q * len(s)))]
-
-
 def main():
     window = float(sys.argv[3]) if len(sys.argv) > 3 else 10.0
     c0, c1 = (chunks_per_window(p, window) for p in sys.argv[1:3])
@@ -37,14 +33,15 @@ def main():
     for k in range(n):
         s0, s1 = c0.get(k, 0) / best, c1.get(k, 0) / best
         slower.append(min(s0, s1))
-        lag = None if min(s0, s1) >= 0.95 * max(s0, s1) else (0 if s0 < s1 else 1)
+        lag = None if min(s0, s1) >= 0.95 * max(s0, s1) else (0 if s0 < s1 else 1)  # who is behind
         behind += lag is not None
-        stretch = stretch + 1 if lag is not None and lag == side else (1 if lag is not None else 0)
+        stretch = 0 if lag is None else (stretch + 1 if lag == side else 1)
         side = lag
         longest = max(longest, stretch)
         print(f"{k * window:10.0f}  {s0:6.2f}  {s1:6.2f}  {min(s0, s1):6.2f}  {s0 / s1 if s1 else 0:15.2f}")
-    print(f"{n} windows of {window:g} s; the slower core's speed: median {quantile(slower, 0.5):.2f}, "
-          f"quartiles {quantile(slower, 0.25):.2f}-{quantile(slower, 0.75):.2f}, "
+    q1, median, q3 = statistics.quantiles(slower, n=4)
+    print(f"{n} windows of {window:g} s; the slower core's speed: median {median:.2f}, "
+          f"quartiles {q1:.2f}-{q3:.2f}, "
           f"lowest {min(slower):.2f}; one core more than 5% behind in {behind} windows, "
           f"the same core for at most {longest} in a row")
 

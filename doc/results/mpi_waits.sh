@@ -13,13 +13,9 @@ fvfsi=$(realpath "${1:-build/fvfsi}")
 runs=$(realpath -m "${2:-build/mpi_waits}")
 mkdir -p "$runs"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-cat > "$runs/wrap.sh" <<WRAP
-#!/bin/bash
-exec perf record -q --call-graph dwarf,16384 -F 499 -o $runs/perf.\$OMPI_COMM_WORLD_RANK "\$@"
-WRAP
-chmod +x "$runs/wrap.sh"
+perf_each_rank "$runs/wrap.sh" -q --call-graph dwarf,16384 -F 499
 fsi3_first_steps 0.03 "$runs/out"
-mpirun -np 2 "$runs/wrap.sh" "$fvfsi" "${fsi3_case[@]}" > "$runs/log" 2>&1
+mpirun -np 2 "$runs/wrap.sh" "$runs" "$fvfsi" "${fsi3_case[@]}" > "$runs/log" 2>&1
 for r in 0 1; do perf script -i "$runs/perf.$r" -F ip,sym,dso 2> /dev/null > "$runs/script.$r"; done
 /usr/bin/python3 - "$runs/script.0" "$runs/script.1" <<'PY'
 import collections, re, sys

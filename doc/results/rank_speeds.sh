@@ -7,8 +7,10 @@
 # do the same work on both; the samples each rank spends in them are its core's time for that
 # work, and their ratio (rank 1 / rank 0) is how much slower core 1 ran than core 0 (1.00: the
 # same speed), whatever the ranks waited. Per round: the two-rank run's coupled-step wall time,
-# each rank's samples in those loops and in Open MPI (mostly waiting), and the ratio. Needs perf
-# (Debian: linux-perf) and two free cores.
+# each rank's samples in those loops (l0, l1) and in Open MPI (mostly waiting), the ratio, and
+# what a partition in proportion to the two cores' speeds would save at most on those loops, free
+# of any cost of moving cells: 1 - 2 l0 l1 / ((l0 + l1) max(l0, l1)). Needs perf (Debian:
+# linux-perf) and two free cores.
 #   usage: doc/results/rank_speeds.sh [path/to/fvfsi [RUN_DIRECTORY [ROUNDS]]]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -19,14 +21,8 @@ rounds=${3:-3}
 mkdir -p "$runs"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 machine_line "binary $fvfsi"
-cat > "$runs/wrap.sh" <<'WRAP'
-#!/bin/bash
-out=$1
-shift
-exec perf record -q -F 999 -o "$out/perf.$OMPI_COMM_WORLD_RANK" "$@"
-WRAP
-chmod +x "$runs/wrap.sh"
-echo "round  coupled steps [s]  local loops: rank 0, rank 1 [samples]  Open MPI: rank 0, rank 1  rank 1 / rank 0"
+perf_each_rank "$runs/wrap.sh" -q -F 999
+echo "round  coupled steps [s]  local loops: rank 0, rank 1 [samples]  Open MPI: rank 0, rank 1  rank 1 / rank 0  saving"
 for round in $(seq 1 "$rounds"); do
   dir="$runs/round$round"
   mkdir -p "$dir"
@@ -55,6 +51,8 @@ def samples(rank):
     return loops, waits
 (l0, w0), (l1, w1) = samples(0), samples(1)
 wall = json.load(open(f"{directory}/out/summary.json"))["results"]["coupled_wall_seconds"]
-print(f"{round_:>5}  {wall:17.2f}  {l0:>20d}, {l1:<16d} {w0:>10d}, {w1:<10d} {l1 / l0:15.2f}")
+saving = 1 - 2 * l0 * l1 / ((l0 + l1) * max(l0, l1))
+print(f"{round_:>5}  {wall:17.2f}  {l0:>20d}, {l1:<16d} {w0:>10d}, {w1:<10d} {l1 / l0:15.2f}  "
+      f"{100 * saving:5.1f}%")
 PY
 done
