@@ -2,11 +2,11 @@
 """Summarise doc/results/core_speed_probe.sh's two chunk logs (core 0, core 1).
 
 Per WINDOW seconds, each core's speed is the chunks it finished in the window over the most any
-window of either core finished (1.00: the best ten seconds, by default, of this probe). Printed: one line per window,
-then the quantiles of the slower core's speed (what a two-rank run, which waits for its slower
-rank, can reach), how many windows had one core more than 5% behind the other, and the longest
-stretch of consecutive windows in which the same core was that far behind (how long an imbalance
-lasts: a partition that follows the cores' speeds needs it to last).
+window of either core finished (1.00: the best WINDOW seconds of this probe, ten by default).
+Printed: one line per window, then the quantiles of the slower core's speed (what a two-rank run,
+which waits for its slower rank, can reach), how many windows had one core more than 5% behind the
+other, and the longest stretch of consecutive windows in which the same core was that far behind
+(how long an imbalance lasts: a partition that follows the cores' speeds needs it to last).
 usage: core_speed_probe.py CORE0_LOG CORE1_LOG [WINDOW]"""
 import statistics
 import sys
@@ -38,7 +38,8 @@ def main():
         stretch = 0 if lag is None else (stretch + 1 if lag == side else 1)
         side = lag
         longest = max(longest, stretch)
-        print(f"{k * window:10.0f}  {s0:6.2f}  {s1:6.2f}  {min(s0, s1):6.2f}  {s0 / s1 if s1 else 0:15.2f}")
+        ratio = s0 / s1 if s1 else 0
+        print(f"{k * window:10.0f}  {s0:6.2f}  {s1:6.2f}  {min(s0, s1):6.2f}  {ratio:15.2f}")
     q1, median, q3 = statistics.quantiles(slower, n=4)
     print(f"{n} windows of {window:g} s; the slower core's speed: median {median:.2f}, "
           f"quartiles {q1:.2f}-{q3:.2f}, "

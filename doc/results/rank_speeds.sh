@@ -1,16 +1,16 @@
 #!/usr/bin/env bash
-# Was one core slower than the other during a two-rank run? (doc/results/performance.md, section
-# 8.) The first 40 steps of prm/turek_hron_fsi3.prm (10 fluid alone, 30 coupled) on two ranks,
-# each under `perf record` (flat, 999 samples per second of its core's time), ROUNDS times. Both
-# ranks hold the same number of fluid cells (p4est's even split), so the loops that touch only a
-# rank's own cells - the matrix-vector products, the face loops of the fluid and the mesh motion -
-# do the same work on both; the samples each rank spends in them are its core's time for that
-# work, and their ratio (rank 1 / rank 0) is how much slower core 1 ran than core 0 (1.00: the
-# same speed), whatever the ranks waited. Per round: the two-rank run's coupled-step wall time,
-# each rank's samples in those loops (l0, l1) and in Open MPI (mostly waiting), the ratio, and
-# what a partition in proportion to the two cores' speeds would save at most on those loops, free
-# of any cost of moving cells: 1 - 2 l0 l1 / ((l0 + l1) max(l0, l1)). Needs perf (Debian:
-# linux-perf) and two free cores.
+# Was one core slower than the other during a two-rank run? (doc/results/performance.md, section 8.)
+# The first 40 steps of prm/turek_hron_fsi3.prm (10 fluid alone, 30 coupled) on two ranks, each
+# under `perf record` (flat, 999 samples per second of its core's time), ROUNDS times. Both ranks
+# hold the same number of fluid cells (p4est's even split), so the loops that touch only a rank's
+# own cells - Epetra's matrix-vector products, the face loops of the fluid and the mesh motion, the
+# gradients and the geometry (`local` below) - do the same work on both; the samples each rank
+# spends in them are its core's time for that work, and their ratio (rank 1 / rank 0) is how much
+# slower core 1 ran than core 0 (1.00: the same speed), whatever the ranks waited. Per round: the
+# two-rank run's coupled-step wall time, each rank's samples in those loops (l0, l1) and in Open MPI
+# (mostly waiting), the ratio, and what a partition in proportion to the two cores' speeds would
+# save at most on those loops, free of any cost of moving cells:
+# 1 - 2 l0 l1 / ((l0 + l1) max(l0, l1)). Needs perf (Debian: linux-perf) and two free cores.
 #   usage: doc/results/rank_speeds.sh [path/to/fvfsi [RUN_DIRECTORY [ROUNDS]]]
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -22,7 +22,8 @@ mkdir -p "$runs"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 machine_line "binary $fvfsi"
 perf_each_rank "$runs/wrap.sh" -q -F 999
-echo "round  coupled steps [s]  local loops: rank 0, rank 1 [samples]  Open MPI: rank 0, rank 1  rank 1 / rank 0  saving"
+echo -n "round  coupled steps [s]  local loops: rank 0, rank 1 [samples]  "
+echo "Open MPI: rank 0, rank 1  rank 1 / rank 0  saving"
 for round in $(seq 1 "$rounds"); do
   dir="$runs/round$round"
   mkdir -p "$dir"
