@@ -43,6 +43,13 @@ namespace fvfsi
                       Patterns::Double(0));
     prm.add_parameter("Max iterations", max_iterations, "Iteration limit of one linear solve.",
                       Patterns::Integer(1));
+    prm.add_parameter(
+      "AMG aggregation threshold", amg_aggregation_threshold,
+      "With Preconditioner = AMG: ML's aggregation threshold. A connection a_ij with |a_ij| "
+      "below this times sqrt(|a_ii a_jj|) counts as weak and does not join cells into one "
+      "aggregate; on stretched cells a larger value lets the aggregates follow the strong "
+      "direction (the shipped FSI cases' pressure: 0.05, doc/results/performance.md).",
+      Patterns::Double(0, 1));
     prm.leave_subsection();
   }
 
@@ -60,7 +67,7 @@ namespace fvfsi
       data.elliptic = true;
       data.higher_order_elements = false;
       data.smoother_sweeps = 2;
-      data.aggregation_threshold = 0.02;
+      data.aggregation_threshold = parameters.amg_aggregation_threshold;
       amg->initialize(matrix, data);
       preconditioner = std::move(amg);
     }

@@ -45,6 +45,9 @@ namespace fvfsi
     ReductionReference reduction_reference = ReductionReference::initial_residual;
     double absolute_tolerance = 1e-14; ///< ... or this absolute residual
     unsigned int max_iterations = 2000;
+    /// ML's aggregation threshold: a connection a_ij with |a_ij| below this times
+    /// sqrt(|a_ii a_jj|) is weak and ignored when the AMG forms its aggregates.
+    double amg_aggregation_threshold = 0.02;
 
     /// Declares `subsection <name>` (e.g. "Linear solver").
     void declare(dealii::ParameterHandler& prm, const std::string& name = "Linear solver");
