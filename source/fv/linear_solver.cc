@@ -48,7 +48,7 @@ namespace fvfsi
       "With Preconditioner = AMG: ML's aggregation threshold. A connection a_ij with |a_ij| "
       "below this times sqrt(|a_ii a_jj|) counts as weak and does not join cells into one "
       "aggregate; on stretched cells a larger value lets the aggregates follow the strong "
-      "direction (the shipped FSI cases' pressure: 0.05, doc/results/performance.md).",
+      "direction (prm/turek_hron_fsi3.prm's pressure: 0.05, doc/results/performance.md).",
       Patterns::Double(0, 1));
     prm.leave_subsection();
   }
