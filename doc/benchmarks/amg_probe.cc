@@ -68,7 +68,10 @@ double median(std::vector<double> v)
 }
 
 // ML's coarsest level solved on every rank: KLU (through Amesos, on a serial communicator) of
-// the whole coarse matrix, gathered once; each application gathers the right-hand side.
+// the whole coarse matrix, gathered once; each application gathers the right-hand side. The same
+// scheme as fvfsi's GatheredDirectSolver (Where::every_rank), which takes a deal.II matrix and
+// factorises with UMFPACK; here ML's own KLU on the raw arrays of ML's smoother interface, so
+// that only where the coarse solve runs changes.
 struct ReplicatedCoarse
 {
   MPI_Comm comm;
