@@ -21,7 +21,9 @@
 # More passes on the same segments: FROM_RUNS=<the first pass's RUN_DIRECTORY> starts every
 # segment from that pass's checkpoints (the same work again); then
 # doc/results/fsi_parallel_segments_median.py RUNS RUNS_2 RUNS_3 takes each segment's median one-
-# and two-rank times over the passes (performance.md reports that figure).
+# and two-rank times over the passes (performance.md reports that figure). With FROM_RUNS,
+# SEGMENTS="8 9 10" runs only those segments (a probe of a setting on part of the run; the
+# tables and segments.json then cover only them).
 # Writes RUN_DIRECTORY/segments.json: each segment's times and the sections summed over all.
 #   usage: doc/results/fsi_parallel_segments.sh [path/to/fvfsi [RUN_DIRECTORY [SEGMENT_STEPS
 #          [END_TIME [--set KEY=VALUE ...]]]]]   (END_TIME and the --set arguments: for a short
@@ -42,6 +44,9 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 machine_line "source tree at commit $(git rev-parse --short HEAD); binary $fvfsi"
 n_steps=$(/usr/bin/python3 -c "import math; print(math.ceil($end / $dt - 1e-6))")
 n_seg=$(( (n_steps + seg - 1) / seg ))
+only=${SEGMENTS:-$(seq -s ' ' 1 "$n_seg")}
+[[ -z ${SEGMENTS:-} || -n ${FROM_RUNS:-} ]] ||
+  { echo "fsi_parallel_segments.sh: SEGMENTS needs FROM_RUNS (their checkpoints)" >&2; exit 1; }
 run() { # run SEGMENT RANKS RESTART_DIRECTORY END_TIME [--set KEY=VALUE ...]
   local k=$1 np=$2 from=$3 end_k=$4
   shift 4
@@ -67,12 +72,14 @@ previous=""
 for k in $(seq 1 "$n_seg"); do
   end_k=$(/usr/bin/python3 -c "print(min($end, round($k * $seg * $dt, 10)))")
   if (( k % 2 )); then order="1 2"; else order="2 1"; fi
-  for np in $order; do run "$k" "$np" "$previous" "$end_k" "${extra[@]}"; done
+  if [[ " $only " == *" $k "* ]]; then
+    for np in $order; do run "$k" "$np" "$previous" "$end_k" "${extra[@]}"; done
+  fi
   previous=${FROM_RUNS:-$runs}/seg${k}_np2
 done
-/usr/bin/python3 - "$runs" "$n_seg" <<'PY'
+/usr/bin/python3 - "$runs" "$only" <<'PY'
 import json, sys
-runs, n = sys.argv[1], int(sys.argv[2])
+runs, segments = sys.argv[1], [int(k) for k in sys.argv[2].split()]
 load = lambda k, np: json.load(open("%s/seg%d_np%d/summary.json" % (runs, k, np)))
 wall = lambda k, np: float(open("%s/seg%d_np%d.wall" % (runs, k, np)).read())
 def loop_time(k, np):
@@ -81,7 +88,7 @@ def loop_time(k, np):
 print("| segment | last step | T1 [s] | T2 [s] | E | geometry E | process wall 1 / 2 ranks [s] |")
 print("|---|---|---|---|---|---|---|")
 S1 = S2 = W1 = W2 = 0.0
-for k in range(1, n + 1):
+for k in segments:
     t1, t2 = loop_time(k, 1), loop_time(k, 2)
     g1, g2 = load(k, 1)["timing"].get("geometry", 0), load(k, 2)["timing"].get("geometry", 0)
     ge = "%.0f%%" % (100 * g1 / (2 * g2)) if g2 > 0 else "-"
@@ -92,7 +99,7 @@ for k in range(1, n + 1):
 print("| all | | %.1f | %.1f | **%.1f%%** | | %.1f / %.1f (%.1f%%) |"
       % (S1, S2, 100 * S1 / (2 * S2), W1, W2, 100 * W1 / (2 * W2)))
 sections = {}
-for k in range(1, n + 1):
+for k in segments:
     for np in (1, 2):
         for key, v in load(k, np)["timing"].items():
             sections.setdefault(key, [0.0, 0.0])[np - 1] += v
@@ -100,12 +107,11 @@ print("\n| section (all segments) | one rank [s] | two ranks [s] | efficiency | 
 print("|---|---|---|---|---|")
 for key, (a, b) in sorted(sections.items(), key=lambda kv: -(kv[1][1] - kv[1][0] / 2)):
     print("| %s | %.1f | %.1f | %.0f%% | %.1f |" % (key, a, b, 100 * a / (2 * b) if b else 0, b - a / 2))
-last = load(n, 2)["results"]
 json.dump({"segments": [{"segment": k, "loop_seconds": [loop_time(k, 1), loop_time(k, 2)],
                          "process_wall_seconds": [wall(k, 1), wall(k, 2)],
                          "timing": [load(k, 1)["timing"], load(k, 2)["timing"]],
                          "results": [load(k, 1)["results"], load(k, 2)["results"]]}
-                        for k in range(1, n + 1)],
+                        for k in segments],
            "sections": sections, "efficiency_loop": S1 / (2 * S2),
            "efficiency_process_wall": W1 / (2 * W2)},
           open("%s/segments.json" % runs, "w"), indent=1)
