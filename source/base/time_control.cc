@@ -35,6 +35,30 @@ namespace fvfsi
       "Euler): BDF2, second order (paper Eqs 17-18), or backward Euler, first order and "
       "strongly damping.",
       dealii::Patterns::Selection("BDF2|backward Euler"));
+    prm.add_parameter(
+      "Adaptive", adaptive,
+      "Fluid and FSI scenes: none (Time step throughout), Courant (each step from the last one's "
+      "largest Courant number: dt <- dt x Max Courant number / Co, as OpenFOAM's adjustTimeStep "
+      "with maxCo) or error (each step from the last one's error estimate e = max |u - u_p| / U, "
+      "u_p the extrapolation of the last two steps to the new time, U the fluid's velocity scale: "
+      "dt <- 0.9 dt sqrt(Error tolerance / e), e being of order dt^2). Time step is then the first "
+      "step; a step grows by at most Max step growth, shrinks by at most a factor 5, and the "
+      "BDF2 coefficients follow the step ratio exactly (variable-step BDF2, stable for ratios "
+      "below 1 + sqrt 2). The column dt of the history holds the steps taken.",
+      dealii::Patterns::Selection("none|Courant|error"));
+    prm.add_parameter("Max Courant number", max_courant,
+                      "Adaptive = Courant: the largest Courant number dt sum_f |phi_f| / (2 V_P) "
+                      "to hold.",
+                      PositiveDouble(1e6));
+    prm.add_parameter("Error tolerance", error_tolerance,
+                      "Adaptive = error: the error estimate e to hold (relative to the fluid's "
+                      "velocity scale).",
+                      PositiveDouble(1));
+    prm.add_parameter("Max time step", max_time_step, "Adaptive: the largest time step [s].",
+                      PositiveDouble(1e10));
+    prm.add_parameter("Max step growth", max_step_growth,
+                      "Adaptive: the largest ratio of a time step to the one before.",
+                      dealii::Patterns::Double(1, 2.4));
     prm.leave_subsection();
   }
 
@@ -42,6 +66,38 @@ namespace fvfsi
       : TimeControl(parameters.time_step, parameters.end_time, parameters.step_limit)
   {
     euler_only = parameters.scheme == "backward Euler";
+    mode = parameters.adaptive == "Courant" ? Adaptive::courant
+           : parameters.adaptive == "error" ? Adaptive::error
+                                            : Adaptive::none;
+    max_courant = parameters.max_courant;
+    error_tolerance = parameters.error_tolerance;
+    max_dt = parameters.max_time_step;
+    growth = parameters.max_step_growth;
+  }
+
+  void TimeControl::adapt_time_step(const double courant, const double error)
+  {
+    if (mode == Adaptive::none)
+      return;
+    // The factor that would bring the measure to its target: the Courant number is linear in
+    // dt, the error estimate quadratic (with a safety factor 0.9: its constant is not known).
+    const double factor = mode == Adaptive::courant
+                            ? max_courant / std::max(courant, 1e-12)
+                            : 0.9 * std::sqrt(error_tolerance / std::max(error, 1e-300));
+    double next = std::min(dt * std::clamp(factor, 0.2, growth), max_dt);
+    // The end time: one step to it rather than a step and a sliver.
+    const double left = end - t;
+    if (left > 0 && left < 1.5 * next)
+      next = left < next ? left : left / std::ceil(left / next - 1e-9);
+    next_dt = std::max(next, 1e-6 * dt);
+  }
+
+  std::pair<double, double> TimeControl::extrapolation_weights() const
+  {
+    if (step_number <= 1 || dt_old == 0)
+      return {1, 0};
+    const double omega = dt / dt_old;
+    return {1 + omega, -omega};
   }
 
   TimeControl::TimeControl(const double time_step, const double end_time,

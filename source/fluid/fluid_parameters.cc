@@ -77,7 +77,20 @@ namespace fvfsi
                       "loop); false: with F^n, a first-order lag as in OpenFOAM's PISO.",
                       Patterns::Bool());
     prm.add_parameter("Pressure correctors", pressure_correctors,
-                      "PISO pressure corrections per outer loop.", Patterns::Integer(1, 100));
+                      "PISO pressure corrections per outer loop, at least (steady: exactly).",
+                      Patterns::Integer(1, 100));
+    prm.add_parameter(
+      "Max pressure correctors", max_pressure_correctors,
+      "Transient: after Pressure correctors, more correctors while the last one changed the "
+      "face velocities F_f / S_f by more than Pressure corrector tolerance times their largest "
+      "value, up to this many (a number below Pressure correctors: exactly Pressure correctors). "
+      "PISO's explicit correctors converge the step's pressure-velocity coupling only at small "
+      "Courant numbers; at Courant numbers of 4 and more two correctors leave an error that grows "
+      "from step to step (doc/results/hard_cases.md). The count of each step is the column "
+      "`correctors` of the history. A coupling iteration repeats the first solve's count.",
+      Patterns::Integer(1, 100));
+    prm.add_parameter("Pressure corrector tolerance", pressure_corrector_tolerance,
+                      "See Max pressure correctors.", Patterns::Double(0, 1));
     prm.add_parameter("Non-orthogonal correctors", non_orthogonal_correctors,
                       "Extra pressure solves per corrector that update the explicit "
                       "non-orthogonal part of Eq. 19 (0 on orthogonal meshes; with 1 the steady "
@@ -86,6 +99,17 @@ namespace fvfsi
                       Patterns::Integer(0, 100));
     prm.add_parameter("Momentum predictor", momentum_predictor,
                       "Solve the momentum equation before the pressure correctors.");
+    prm.add_parameter(
+      "Velocity bound", velocity_bound,
+      "No silent divergence: after every (pseudo) time step max |u| over the cells must stay "
+      "below this times the velocity scale U of the run's data (the largest given boundary "
+      "velocity at inlets and moving walls, sqrt of the outlets' kinematic pressure differences, "
+      "sqrt(|g| L) of the body force over the domain's diameter L, the initial velocity; the "
+      "largest so far). Otherwise the run stops, naming the step, the value and the cell, and "
+      "writes its last good state. The shipped cases stay below 3 U "
+      "(doc/results/hard_cases.md); a flow that legitimately runs faster than 10 U (a jet "
+      "through a narrow contraction) needs a larger bound.",
+      Patterns::Double(1, 1e10));
     prm.add_parameter("Preconditioner update interval", preconditioner_update_interval,
                       "Rebuild the momentum ILU and pressure AMG preconditioners every this many "
                       "time steps (the matrices change slowly; an older preconditioner only costs "

@@ -6,6 +6,7 @@
 #include <fvfsi/base/exceptions.h>
 #include <fvfsi/base/parsed_function.h>
 #include <fvfsi/fluid/fluid_solver.h>
+#include <fvfsi/fv/divergence_guard.h>
 #include <fvfsi/fv/ghost_faces.h>
 
 #include "fluid_piso.templates.h"
@@ -52,7 +53,7 @@ namespace fvfsi
     pressure_rhs = geometry.make_cell_vector();
     const unsigned int n_faces = geometry.faces.size();
     for (auto* field : {&F, &F_old, &F_old2, &F_mesh, &F_star, &gamma_p, &gamma_c, &a_star_f,
-                        &boundary_p, &swept, &swept_old})
+                        &boundary_p, &swept, &swept_old, &F_before_corrector})
       field->assign(n_faces, 0.0);
     V_old = V_old2 = geometry.cell_volume;
     for (const auto& face : geometry.faces)
@@ -70,6 +71,9 @@ namespace fvfsi
     operators.laplacian.reinit_matrix(pressure_matrix);
     set_initial_conditions();
     update_volume_ratios();
+    domain_length = domain_diameter(geometry);
+    scale_U =
+      cell_maximum<dim>(geometry, [this](const unsigned int c) { return u[c].norm(); }).value;
   }
 
   template <int dim>
@@ -349,10 +353,13 @@ namespace fvfsi
       // F^n + (F^n - F^(n-1)), and velocity 2 u^n - u^(n-1) for the explicit parts (deferred
       // convection and non-orthogonal corrections, boundary values): their lag becomes O(dt^2).
       // The PISO correctors overwrite F and u with the new values.
+      // The weights follow the step ratio (the clock's), so that a changed step extrapolates
+      // to the right time: (2, -1) for equal steps.
+      const auto [w1, w2] = clock.extrapolation_weights();
       for (unsigned int f = 0; f < F.size(); ++f)
-        F[f] = 2 * F_old[f] - F_old2[f];
+        F[f] = w1 * F_old[f] + w2 * F_old2[f];
       for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
-        u.set(c, 2 * u_old[c] - u_old2[c]);
+        u.set(c, w1 * u_old[c] + w2 * u_old2[c]);
       u.update_ghost_values();
     }
     u_start = u;
@@ -361,6 +368,7 @@ namespace fvfsi
     grad_u_start = grad_u;
     grad_p_start = grad_p;
     solves_this_step = 0;
+    step_correctors.clear();
   }
 
   template <int dim>
@@ -398,8 +406,9 @@ namespace fvfsi
     compute_mesh_fluxes();
     try
     {
+      correctors_used = 0;
       for (unsigned int outer = 0; outer < prm.outer_correctors; ++outer)
-        solve_outer_iteration(outer + 1 == prm.outer_correctors);
+        solve_outer_iteration(outer, outer + 1 == prm.outer_correctors);
     }
     catch (const std::exception& e)
     {
@@ -409,6 +418,7 @@ namespace fvfsi
     }
     update_velocity_boundary_values();
     update_velocity_gradients();
+    check_bounded_velocity();
   }
 
   template <int dim>
@@ -418,9 +428,14 @@ namespace fvfsi
     // least the speed the pressure differences drive, sqrt(max p - min p) (p kinematic,
     // Bernoulli): a fluid at rest under gravity has no speed but a pressure range, and its
     // change relative to max|u| would be round-off over round-off.
-    double max_du = 0, max_u = 0, max_p = -1e300, min_p = 1e300;
+    // The error estimate of adaptive steps: the distance of u from its extrapolation to this
+    // time, max |u - (w1 u^n + w2 u^(n-1))| / U (zero on the first step).
+    const auto [w1, w2] = clock.extrapolation_weights();
+    double max_du = 0, max_u = 0, max_p = -1e300, min_p = 1e300, max_e = 0;
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
     {
+      if (w2 != 0)
+        max_e = std::max(max_e, (u[c] - w1 * u_old[c] - w2 * u_old2[c]).norm());
       max_du = std::max(max_du, (u[c] - u_old[c]).norm());
       max_u = std::max(max_u, u[c].norm());
       max_p = std::max(max_p, p.local_element(c));
@@ -432,12 +447,13 @@ namespace fvfsi
       max_u = std::max(max_u, std::sqrt(std::max(Utilities::MPI::max(max_p, geometry.comm()) -
                                                    Utilities::MPI::min(min_p, geometry.comm()),
                                                  0.0)));
+    last_error = Utilities::MPI::max(max_e, geometry.comm()) / std::max(scale_U, 1e-300);
     shift_time_levels();
     last_change = max_du / std::max(max_u, 1e-300);
   }
 
   template <int dim>
-  void FluidSolver<dim>::solve_outer_iteration(const bool last)
+  void FluidSolver<dim>::solve_outer_iteration(const unsigned int outer, const bool last)
   {
     // One PISO sequence: momentum predictor with the latest fluxes, then pressure correctors.
     update_velocity_boundary_values();
@@ -451,18 +467,64 @@ namespace fvfsi
       check_finite("velocity (momentum predictor)");
     }
     assemble_pressure_matrix();
-    for (unsigned int corrector = 0; corrector < prm.pressure_correctors; ++corrector)
+    // PISO's correctors (Issa 1986): at least `least`, then more while the last one still
+    // changed the face velocities F_f / S_f by more than the Pressure corrector tolerance times
+    // their largest value, at most `most`. Each corrector from the least on may be the last, so
+    // its pressure solve gets the full Residual reduction.
+    const auto [least, most] = corrector_range(outer);
+    unsigned int k = 1;
+    for (;; ++k)
     {
+      const bool may_be_last = k >= least;
+      if (may_be_last && k < most)
+        F_before_corrector = F;
       compute_predicted_fluxes();
       if (simplec())
         grad_p_before = grad_p;
-      solve_pressure(last && corrector + 1 == prm.pressure_correctors);
+      solve_pressure(last && may_be_last);
       correct_fluxes();
       update_pressure_boundary_values();
       update_pressure_gradient();
       correct_velocity();
       check_finite("pressure or velocity (pressure corrector)");
+      if (k >= most || (may_be_last && face_velocity_change() < prm.pressure_corrector_tolerance))
+        break;
     }
+    if (solves_this_step == 1)
+      step_correctors.push_back(k);
+    correctors_used += k;
+  }
+
+  template <int dim>
+  std::pair<unsigned int, unsigned int>
+  FluidSolver<dim>::corrector_range(const unsigned int outer) const
+  {
+    // A repeated solve of the step (a coupling iteration) takes the first solve's counts: the
+    // solve is then a smooth function of the mesh motion, as a quasi-Newton coupling needs.
+    if (solves_this_step > 1 && outer < step_correctors.size())
+      return {step_correctors[outer], step_correctors[outer]};
+    if (!prm.transient)
+      return {prm.pressure_correctors, prm.pressure_correctors};
+    return {prm.pressure_correctors,
+            std::max(prm.pressure_correctors, prm.max_pressure_correctors)};
+  }
+
+  template <int dim>
+  double FluidSolver<dim>::face_velocity_change() const
+  {
+    // max_f |F_f - F_f^before| / S_f over max_f |F_f| / S_f.
+    double change = 0, largest = 0;
+    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    {
+      const auto& face = geometry.faces[f];
+      if (face.kind == FaceKind::ghost_boundary)
+        continue;
+      change = std::max(change, std::abs(F[f] - F_before_corrector[f]) / face.area);
+      largest = std::max(largest, std::abs(F[f]) / face.area);
+    }
+    change = Utilities::MPI::max(change, geometry.comm());
+    largest = Utilities::MPI::max(largest, geometry.comm());
+    return largest > 0 ? change / largest : 0;
   }
 
   template <int dim>

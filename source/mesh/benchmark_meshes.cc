@@ -86,7 +86,8 @@ namespace fvfsi
            name == "fvfsi_turek_hron_channel" || name == "fvfsi_cavity_channel" ||
            name == "fvfsi_cavity_plate" || name == "fvfsi_tube_fluid" ||
            name == "fvfsi_tube_wall" || name == "fvfsi_thick_plate_channel" ||
-           name == "fvfsi_thick_plate";
+           name == "fvfsi_thick_plate" || name == "fvfsi_wall_plate_channel" ||
+           name == "fvfsi_wall_plate";
   }
 
   template <int dim>
@@ -105,6 +106,10 @@ namespace fvfsi
         return make_cavity_channel(arguments, tria);
       if (name == "fvfsi_cavity_plate")
         return make_cavity_plate(arguments, tria);
+      if (name == "fvfsi_wall_plate_channel")
+        return make_wall_plate_channel(arguments, tria);
+      if (name == "fvfsi_wall_plate")
+        return make_wall_plate(arguments, tria);
     }
     if constexpr (dim == 3)
     {

@@ -97,6 +97,8 @@ namespace fvfsi
         columns.push_back(c);
       columns.push_back("p_" + probes.name(i));
     }
+    columns.push_back("correctors"); // PISO pressure correctors of the step
+    columns.push_back("dt");         // the step (Time/Adaptive changes it)
     this->open_history("fluid_history.txt", columns);
   }
 
@@ -172,6 +174,8 @@ namespace fvfsi
       append(line, u);
       line.push_back(p);
     }
+    line.push_back(fluid->pressure_correctors_used());
+    line.push_back(clock.time_step());
     history->write_line(line);
   }
 
@@ -233,13 +237,13 @@ namespace fvfsi
   template <int dim>
   void FluidScene<dim>::run_transient()
   {
-    const unsigned int total = clock.last_step();
     const auto mesh_state = [this](MeshArchive<dim>& a) { checkpoint_state(a); };
     const auto global_state = [this](GlobalArchive& a) { checkpoint_state(a); };
     Progress progress;
     progress.new_phase(clock.step()); // a restarted run: the time left from its own steps
-    for (unsigned int step = clock.step() + 1; step <= total; ++step)
+    while (!clock.at_end())
     {
+      const unsigned int step = clock.step() + 1;
       this->capture_step_start(mesh_state, global_state);
       try
       {
@@ -266,6 +270,10 @@ namespace fvfsi
       }
       result.n_time_steps = step;
       record_time_history();
+      // Adaptive steps: the next one from this one's Courant number or error estimate; the
+      // total is then the count at the new dt (for the progress line).
+      clock.adapt_time_step(fluid->courant_number(), fluid->step_error());
+      const unsigned int total = clock.last_step();
       if (this->progress_due(step, total))
         pcout << "fvfsi: fluid step " << step << "/" << total << ", t = " << clock.time()
               << " s, Courant " << fluid->courant_number() << ", drag " << history_drag.back()

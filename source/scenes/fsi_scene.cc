@@ -132,7 +132,11 @@ namespace fvfsi
       }
     columns.push_back("min_volume_ratio"); // min over the fluid cells of V_P / V_P(reference)
     if (!steady)
-      columns.push_back("dt"); // the time step of the line (Time step control may halve it)
+    {
+      columns.push_back("courant");    // the fluid's largest Courant number
+      columns.push_back("correctors"); // the fluid's PISO pressure correctors per solve
+      columns.push_back("dt"); // the time step of the line (Time step control, Time/Adaptive)
+    }
     const std::string name = steady ? "/fsi_steady_history.txt" : "/fsi_history.txt";
     if (checkpoints.restart_from.empty())
       history = std::make_unique<HistoryFile>(output_directory + name, columns, comm);
@@ -352,6 +356,8 @@ namespace fvfsi
     }
     append_fluid_probes(line);
     line.push_back(volume_ratio);
+    line.push_back(fluid->courant_number());
+    line.push_back(fluid->pressure_correctors_used());
     line.push_back(clock.time_step());
     history->write_line(line);
   }

@@ -41,10 +41,12 @@ namespace fvfsi
           continue;
         throw;
       }
-      if (halvings > 0) // the steps to the end time at the present dt
-        total = clock.last_step();
       halvings = 0;
       count_time_step(step, iterations, step_timer.wall_time(), progress);
+      // Adaptive steps (Time/Adaptive): the next one from this one's Courant number or error
+      // estimate.
+      clock.adapt_time_step(fluid->courant_number(), fluid->step_error());
+      total = clock.last_step(); // the steps to the end time at the present dt
       if (step % fluid_scene_parameters.progress_interval == 0 || clock.at_end())
         print_progress(step, total, iterations, last_fluid_alone_step, progress);
       if (fluid_scene_parameters.output_interval > 0 &&

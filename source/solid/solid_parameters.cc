@@ -47,6 +47,13 @@ namespace fvfsi
                       "Stop the outer (segregated) iterations of a time step when "
                       "max |du| / max |u| is below this.",
                       PositiveDouble(1));
+    prm.add_parameter(
+      "Displacement bound", displacement_bound,
+      "No silent divergence: after every solve max |u| over the cells must stay below this "
+      "times (the diameter of the body's bounding box + the largest given boundary "
+      "displacement); otherwise the run stops naming the time step, the value and the cell. "
+      "A clamped body bends, it does not travel its own size.",
+      Patterns::Double(1e-6, 1e10));
     prm.add_parameter("Max outer iterations", max_outer_iterations,
                       "Limit of outer iterations per time step (exceeding it stops the run).",
                       Patterns::Integer(1));

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <fvfsi/base/parsed_function.h>
+#include <fvfsi/fv/divergence_guard.h>
 #include <fvfsi/solid/solid_solver.h>
 
 #include "solid_coupled.templates.h"
@@ -217,6 +218,7 @@ namespace fvfsi
     {
       solve_coupled();
       check_stretch();
+      check_bounded_displacement();
       return;
     }
     // Outer iterations: the fixed point u = u + A^-1 R(u), accelerated by Anderson mixing.
@@ -238,6 +240,7 @@ namespace fvfsi
         update_gradients();
         last_outer_iterations = k;
         check_stretch();
+        check_bounded_displacement();
         return;
       }
     }
@@ -246,6 +249,27 @@ namespace fvfsi
                              std::to_string(parameters.max_outer_iterations) +
                              " iterations (raise Solid/Max outer iterations, or reduce the load or "
                              "time step)");
+  }
+
+  template <int dim>
+  void SolidSolver<dim>::check_bounded_displacement()
+  {
+    if (body_size == 0)
+      body_size = domain_diameter(geometry);
+    double given = 0;
+    for (const unsigned int f : geometry.boundary_faces())
+      if (conditions.type(f) == Type::fixed_displacement)
+        given = std::max(given, boundary_u[f].norm());
+    given_displacement = std::max(given_displacement, Utilities::MPI::max(given, geometry.comm()));
+    const double scale = body_size + given_displacement;
+    check_bounded(cell_maximum<dim>(geometry, [this](const unsigned int c) { return u[c].norm(); }),
+                  parameters.displacement_bound * scale, "Solid", clock.step_name(), "max |u|", "m",
+                  Utilities::to_string(parameters.displacement_bound) +
+                    " x (the body's diameter + the largest given displacement) = " +
+                    Utilities::to_string(parameters.displacement_bound) + " x " +
+                    Utilities::to_string(scale) + " m; Solid/Displacement bound",
+                  "check the loads (Solid/Traction, Solid/Pressure, Solid/Body force, "
+                  "Solid/Fixed displacement) and Time/Time step");
   }
 
   template <int dim>

@@ -9,7 +9,10 @@
 //       B moves outwards (u_y(B) > 0, B on the +y side: radial), more than at the midsection A;
 //   (b) recorded values at t = 1 ms of the run of (c): p at 5 and 10 mm, u_y(B) with 6
 //       significant digits (numdiff's default -r 1e-8 checks the printed digits; deterministic to
-//       1e-9), and the coupling iterations of the shipped run within 10% of the recorded count;
+//       1e-9; recorded anew with the self-converging PISO correctors, 3 on the first two steps
+//       and 2 after: p(10 mm) 233.943 -> 239.303 Pa. On this coarse tube at dt = 0.1 ms PISO's
+//       correctors do not settle with their count: 2, 12 and 30 in every step give p(10 mm) =
+//       234, 278 and 243 Pa, so these digits record the algorithm, not a converged value), and the coupling iterations of the shipped run within 10% of the recorded count;
 //   (c) np ranks equal one rank over 10 steps (1 ms) of the tube one refinement less (480 fluid
 //       + 384 wall cells, the mesh of (d)), as tests/coupling/fsi3_coarse (c): every linear solve
 //       to 1e-12, the solid to 1e-13, the coupling to 1e-11, the fluid and the wall decomposed

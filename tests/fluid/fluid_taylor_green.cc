@@ -39,7 +39,12 @@ struct State
 
 State run(const unsigned int n_steps, const std::vector<std::string>& extra)
 {
-  const auto scene_pointer = run_fluid_case("taylor_green", 1.0 / n_steps, extra);
+  // Two pressure correctors in every step: the order of one scheme. (By default the solver adds
+  // correctors where the second one still changed the face velocities by more than 1e-3, which
+  // it does at the larger steps here: an order study would then mix two schemes.)
+  std::vector<std::string> settings = {"Fluid/Max pressure correctors=2"};
+  settings.insert(settings.end(), extra.begin(), extra.end());
+  const auto scene_pointer = run_fluid_case("taylor_green", 1.0 / n_steps, settings);
   const auto& scene = *scene_pointer;
   const auto& fv = scene.geometry();
   State s;

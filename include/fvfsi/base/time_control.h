@@ -15,6 +15,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <utility>
 
 namespace fvfsi
 {
@@ -55,6 +56,14 @@ namespace fvfsi
     unsigned int step_limit = 0;
     /// The time derivative after the first step: "BDF2" (second order) or "backward Euler".
     std::string scheme = "BDF2";
+    /// Adaptive time steps (fluid and FSI scenes): "none", "Courant" (the largest Courant
+    /// number held at max_courant) or "error" (the step's error estimate held at
+    /// error_tolerance). `Time step` is then the first step.
+    std::string adaptive = "none";
+    double max_courant = 1;        ///< Adaptive = Courant: the target (OpenFOAM's maxCo)
+    double error_tolerance = 1e-3; ///< Adaptive = error: the target of the error estimate
+    double max_time_step = 1e10;   ///< adaptive steps stay below this [s]
+    double max_step_growth = 1.2;  ///< ... and grow by at most this factor per step
     void declare(dealii::ParameterHandler& prm);
   };
 
@@ -74,6 +83,16 @@ namespace fvfsi
     void advance();
     /// Take `dt` from the next advance() on [s].
     void set_time_step(double dt) { next_dt = dt; }
+    /// True if Time/Adaptive is not none.
+    bool adaptive() const { return mode != Adaptive::none; }
+    /// Adaptive time steps: the next dt from the step just solved, its largest Courant number
+    /// and its error estimate (the one the mode reads), within the growth limit, below Max time
+    /// step, and ending on the end time rather than a sliver short of it. No-op if not adaptive.
+    void adapt_time_step(double courant, double error);
+    /// The weights (w1, w2) of the extrapolation u^(n+1) ~ w1 u^n + w2 u^(n-1) to the step being
+    /// solved, exact for linear functions of time with the present step ratio omega = dt / dt_o:
+    /// (1 + omega, -omega); (1, 0) on the first step.
+    std::pair<double, double> extrapolation_weights() const;
 
     double time() const { return t; }                    ///< t^(n+1) of the step being solved [s]
     double previous_time() const { return t - dt; }      ///< t^n [s]
@@ -108,6 +127,14 @@ namespace fvfsi
     }
 
   private:
+    enum class Adaptive
+    {
+      none,
+      courant,
+      error
+    };
+    Adaptive mode = Adaptive::none; // TimeParameters::adaptive and its limits, from the .prm file
+    double max_courant = 1, error_tolerance = 1e-3, max_dt = 1e10, growth = 1.2;
     double t = 0, dt, dt_old = 0, next_dt, end;
     unsigned int step_number = 0;
     unsigned int limit;      // TimeParameters::step_limit; not saved in a checkpoint

@@ -45,9 +45,14 @@ namespace fvfsi
 
     unsigned int outer_correctors = 1;    ///< PIMPLE outer loops per time step (1 = PISO)
     bool flux_extrapolation = true;       ///< BDF2: first outer loop convects with 2 F^n - F^(n-1)
-    unsigned int pressure_correctors = 2; ///< PISO pressure correctors per outer loop
+    unsigned int pressure_correctors = 2; ///< PISO pressure correctors per outer loop, at least
+    unsigned int max_pressure_correctors = 6; ///< ... and at most (transient)
+    /// More correctors while the last changed the face velocities by more than this, relative.
+    double pressure_corrector_tolerance = 1e-3;
     unsigned int non_orthogonal_correctors = 2; ///< extra pressure solves for Eq. 19's correction
     bool momentum_predictor = true;
+    /// The divergence guard: max |u| may not exceed this times the velocity scale of the data.
+    double velocity_bound = 10;
     unsigned int preconditioner_update_interval = 10; ///< time steps between ILU/AMG rebuilds
     /// The face velocity of the convection term (deferred correction on implicit upwind).
     enum class Convection

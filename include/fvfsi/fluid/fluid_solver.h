@@ -116,6 +116,11 @@ namespace fvfsi
     void end_time_step() override;
     /// max|u^(n+1) - u^n| / max|u^(n+1)| of the last accepted step.
     double relative_change() const { return last_change; }
+    /// The last accepted step's error estimate max |u - u_p| / U, u_p the extrapolation of the
+    /// two steps before to its time, U the velocity scale (Time/Adaptive = error); 0 on the first.
+    double step_error() const { return last_error; }
+    /// The PISO pressure correctors of the last solve, summed over its outer loops.
+    unsigned int pressure_correctors_used() const { return correctors_used; }
 
     /// Start from the velocity u(x) [m/s] and, if given, the kinematic pressure p(x) / rho
     /// [m^2/s^2] at the cell centres (every time level alike; the fluxes interpolated from u):
@@ -177,6 +182,13 @@ namespace fvfsi
     double continuity_error() const;
     /// max over cells of the Courant number dt sum_f |phi_f| / (2 V_P).
     double courant_number() const;
+    /// U [m/s], the largest speed the data of the run have set so far: given boundary velocities
+    /// (inlets, moving walls), sqrt(dp) of the outlets' pressure differences (Bernoulli, p
+    /// kinematic), sqrt(|g| L) of the body force over the domain's diameter L, the initial
+    /// velocity. The divergence guard bounds max |u| by Velocity bound times U.
+    double velocity_scale() const { return scale_U; }
+    /// max |u| over the cells / velocity_scale() after the last solve, the guard's ratio.
+    double velocity_ratio() const { return last_velocity_ratio; }
     /// Velocity u [m/s], pressure p [Pa] and vorticity [1/s] (2D: dv/dx - du/dy; 3D: its
     /// magnitude) as output fields.
     void add_output_fields(OutputFields<dim>& fields) const;
@@ -210,8 +222,16 @@ namespace fvfsi
     void update_pressure_gradient();
 
     // The steps of one PISO time step.
-    /// One PISO sequence; `last`: the last outer loop of the time step.
-    void solve_outer_iteration(bool last);
+    /// One PISO sequence, outer loop `outer` (from 0); `last`: the last outer loop of the step.
+    void solve_outer_iteration(unsigned int outer, bool last);
+    /// The least and most pressure correctors of outer loop `outer` of this solve.
+    std::pair<unsigned int, unsigned int> corrector_range(unsigned int outer) const;
+    /// max_f |F_f - F_f^before| / S_f over max_f |F_f| / S_f: what the last corrector changed.
+    double face_velocity_change() const;
+    FaceVector F_before_corrector;
+    /// The pressure correctors of each outer loop of the step's first solve.
+    std::vector<unsigned int> step_correctors;
+    unsigned int correctors_used = 0; ///< pressure_correctors_used()
     void assemble_momentum();
     void add_convection_correction(unsigned int f, double phi);
     /// The viscous and convective terms of boundary face f (relative flux phi).
@@ -248,6 +268,11 @@ namespace fvfsi
       return (step_index() - 1) % prm.preconditioner_update_interval == 0;
     }
     void check_finite(const char* field) const;
+    /// The divergence guard (fv/divergence_guard.h): raises U by this step's data, then throws a
+    /// DivergenceError if max |u| > Velocity bound x U.
+    void check_bounded_velocity();
+    /// This step's data's speed (see velocity_scale()).
+    double data_velocity_scale() const;
     /// "time step N (t = ... s)" or "pseudo time step N", for messages.
     std::string step_name() const;
 
@@ -287,7 +312,11 @@ namespace fvfsi
     /// Steady: alpha in use (Momentum relaxation, lowered by solve_steady() where the pseudo
     /// steps stop making progress; the steady solution does not depend on it).
     double relaxation = 1;
-    double last_change = 0; ///< relative_change()
+    double last_change = 0;         ///< relative_change()
+    double scale_U = 0;             ///< velocity_scale(), the running maximum [m/s]
+    double last_error = 0;          ///< step_error()
+    double domain_length = 0;       ///< the domain's diameter L [m]
+    double last_velocity_ratio = 0; ///< velocity_ratio()
     // The state a time step starts from (after extrapolation), for repeated solves of the step:
     // the fields and the gradients the boundary values are extrapolated with (u_b at outlets,
     // p_b at walls), so that every solve of the step starts from the same boundary values too.

@@ -70,6 +70,18 @@ namespace fvfsi
    *   The plate as (0.1 / h) x (0.2 / h) x (0.2 / h) cubes of size h, vertex for vertex with
    *   fvfsi_thick_plate_channel's interface for the same h. Boundary ids: 0 clamped (y = 0),
    *   1 symmetry (z = 0), 2 interface (x = 0.45, x = 0.55, y = 0.2, z = -0.2).
+   *
+   * fvfsi_wall_plate_channel  n_x: n_p: n_1: n_2[: g_x[: g_y]]   (the hard-case issue's channel)
+   *   The channel [-3, 3] x [0, 4] without the plate [-0.05, 0.05] x [0, 1] standing on its
+   *   floor, five blocks as blockMesh makes them: n_x columns on each side of the plate graded so
+   *   that the cell next to it is 1 / g_x (2) times the outer one, n_p columns over the plate,
+   *   n_1 rows up to y = 1 and n_2 above, graded g_y (2) : 1 upwards. The tutorial's mesh refined
+   *   r times is 30r: 3r: 15r: 30r (2 790 r^2 cells). Boundary ids: 0 inlet (x = -3), 1 outlet
+   *   (x = 3), 2 plate, 3 walls (floor and top).
+   *
+   * fvfsi_wall_plate  n_p: n_1   (the plate of the same case as a solid)
+   *   [-0.05, 0.05] x [0, 1] as n_p x n_1 cells, vertex for vertex with the channel's plate faces
+   *   for the same n_p, n_1. Boundary ids: 0 clamped (y = 0), 1 the wet faces.
    */
   /// The Turek-Hron fluid domain (fvfsi_turek_hron_channel), in turek_hron_channel.cc.
   void make_turek_hron_channel(const std::string& arguments, dealii::Triangulation<2>& tria);
@@ -87,6 +99,11 @@ namespace fvfsi
   /// (fvfsi_thick_plate), in thick_plate_meshes.cc.
   void make_thick_plate_channel(const std::string& arguments, dealii::Triangulation<3>& tria);
   void make_thick_plate(const std::string& arguments, dealii::Triangulation<3>& tria);
+
+  /// The plate in a channel (fvfsi_wall_plate_channel) and the plate (fvfsi_wall_plate), in
+  /// wall_plate_meshes.cc.
+  void make_wall_plate_channel(const std::string& arguments, dealii::Triangulation<2>& tria);
+  void make_wall_plate(const std::string& arguments, dealii::Triangulation<2>& tria);
 
   template <int dim>
   void make_benchmark_mesh(const std::string& name, const std::string& arguments,

@@ -76,6 +76,9 @@ namespace fvfsi
     bool transient = false; ///< false: steady (no inertia)
     /// Outer (segregated) iterations per time step: stop when max |du| / max |u| < tolerance.
     double outer_tolerance = 1e-6;
+    /// The divergence guard: max |u| may not exceed this times (the body's diameter + the
+    /// largest given displacement).
+    double displacement_bound = 1;
     unsigned int max_outer_iterations = 1000;
     /// Anderson acceleration of the outer iterations: number of kept differences (0: none).
     unsigned int acceleration_depth = 10;

@@ -152,6 +152,11 @@ namespace fvfsi
     /// a boundary displacement gradient on traction faces far beyond any real strain says that
     /// the traction is too large for the boundary condition's iteration (Eq. 24). "" otherwise.
     std::string divergence_hint() const;
+    /// The divergence guard (fv/divergence_guard.h): throws a DivergenceError if max |u| exceeds
+    /// Displacement bound x (body diameter + largest given displacement so far).
+    void check_bounded_displacement();
+    double body_size = 0;          ///< the body's diameter [m]
+    double given_displacement = 0; ///< the largest given boundary displacement so far [m]
     void update_gradients();
     /// `with_ghosts = false`: the present variant's gradients of owned cells only (the boundary
     /// sweeps read no other); the other variants always update the ghosts.
