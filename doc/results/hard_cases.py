@@ -158,13 +158,16 @@ def run_openfoam(name, r, aspect, inflow, dt):
     for line in p.stdout.splitlines():
         if line.startswith("Courant Number mean"):
             courant.append(float(line.split()[-1]))
-    reached = t_last >= END - 1e-6 * dt
+    # pimpleFoam stops at the last step before endTime - dt / 2, fvfsi at the first one past
+    # endTime - 1e-6 dt: both within half a step of END.
+    reached = t_last >= END - 0.5 * dt - 1e-9
     status = ("stable" if p.returncode == 0 and reached and drag is not None and abs(drag) < 1000
               else "stopped with a message" if p.returncode != 0 else "silent failure")
     message = "" if p.returncode == 0 else (
         "floating point exception" if "Floating point" in p.stdout + p.stderr else
         (p.stderr.strip().splitlines() or ["exit %d" % p.returncode])[-1])
     return {"code": "pimpleFoam", "status": status, "message": message, "wall_s": round(wall, 2),
+            "t_end": t_last,
             "steps": len(courant), "drag": drag, "max_courant": max(courant) if courant else None,
             "courant_end": courant[-1] if courant else None}
 

@@ -6,6 +6,7 @@
 # and the correctors per step of each run.
 #
 #   usage (from the project root): doc/results/hard_cases_benchmarks.sh build/fvfsi [WORK] [REPEATS=3]
+#   VARIANTS="default" runs the defaults alone (the guards' margins of section 4).
 #
 # Cases: CFD2 (steady: no correctors to adapt, the same arithmetic), CFD3's cost case of
 # ../shared/peers/openfoam-cfd3/cost.sh (n = 40, dt = 2.5e-4 s, 400 steps, full inflow from rest),
@@ -33,7 +34,8 @@ import json, sys, os
 name, variant, start, end, out = sys.argv[1:]
 r = json.load(open(os.path.join(out, "summary.json"))).get("results", {})
 keep = {k: r[k] for k in ("drag", "lift", "time_steps", "point_A_displacement",
-                          "total_coupling_iterations") if k in r}
+                          "total_coupling_iterations", "max_velocity_over_scale",
+                          "max_displacement_over_scale") if k in r}
 hist = [f for f in ("fluid_history.txt", "fsi_history.txt") if os.path.exists(os.path.join(out, f))]
 correctors = []
 if hist:
@@ -63,7 +65,7 @@ CFD3=(prm/turek_hron_cfd3.prm --set "Mesh/Generator arguments=40" --set "Time/Ti
 FSI3=(prm/turek_hron_fsi3.prm --set "Restart from=$FSI3_CHECKPOINT" --set "Time/End time=2.075"
       --set "Fluid scene/Output interval=0")
 for k in $(seq "$REPEATS"); do
-  for variant in fixed2 default; do
+  for variant in ${VARIANTS:-fixed2 default}; do
     run cfd2 "$variant" prm/turek_hron_cfd2.prm
     run cfd3_cost "$variant" "${CFD3[@]}"
     run fsi_demo "$variant" prm/fsi_demo.prm

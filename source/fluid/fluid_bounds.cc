@@ -59,6 +59,7 @@ namespace fvfsi
       cell_maximum<dim>(geometry, [this](const unsigned int c) { return u[c].norm(); });
     // Nothing drives the flow (U = 0): no scale to compare with.
     last_velocity_ratio = scale_U > 0 ? largest.value / scale_U : 0;
+    largest_velocity_ratio_seen = std::max(largest_velocity_ratio_seen, last_velocity_ratio);
     if (scale_U > 0)
       check_bounded(largest, prm.velocity_bound * scale_U, "Fluid", step_name(), "max |u|", "m/s",
                     Utilities::to_string(prm.velocity_bound) +

@@ -296,6 +296,8 @@ namespace fvfsi
     summary.set("n_cells", fv->n_global_cells());
     summary.set_result("time_steps", result.n_time_steps);
     summary.set_result("continuity_error", fluid->continuity_error());
+    if (fluid_parameters.transient) // the divergence guard's margin (Fluid/Velocity bound)
+      summary.set_result("max_velocity_over_scale", fluid->largest_velocity_ratio());
     if (!scene_parameters.force_patches.empty() && !history_drag.empty()) // no steps: none
     {
       summary.set_result("drag", history_drag.back());

@@ -456,6 +456,11 @@ namespace fvfsi
     summary.set_result("mean_coupling_iterations_per_step", result.mean_coupling_iterations());
     summary.set_result("max_coupling_iterations_per_step", result.max_coupling_iterations);
     summary.set_result("min_cell_volume_ratio", result.min_volume_ratio);
+    if (!steady) // the divergence guards' margins (Fluid/Velocity bound, Solid/Displacement bound)
+    {
+      summary.set_result("max_velocity_over_scale", fluid->largest_velocity_ratio());
+      summary.set_result("max_displacement_over_scale", solid->largest_displacement_ratio());
+    }
     summary.set_result("solid_outer_iterations", result.solid_outer_iterations);
     summary.set_result("solid_least_stretch", solid->least_stretch()); // 1: linear elasticity
     summary.set_result("coupled_wall_seconds", result.coupled_wall_seconds);

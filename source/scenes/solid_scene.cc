@@ -199,6 +199,8 @@ namespace fvfsi
                          std::vector<double>(&u[0], &u[0] + dim));
     summary.set_result("outer_iterations", result.total_outer_iterations);
     summary.set_result("least_stretch", solid->least_stretch()); // 1: linear elasticity
+    // The divergence guard's margin (Solid/Displacement bound).
+    summary.set_result("max_displacement_over_scale", solid->largest_displacement_ratio());
     if (solid_parameters.algorithm == SolidParameters::Algorithm::coupled)
     {
       // outer_iterations are Newton iterations here

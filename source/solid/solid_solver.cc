@@ -262,8 +262,12 @@ namespace fvfsi
         given = std::max(given, boundary_u[f].norm());
     given_displacement = std::max(given_displacement, Utilities::MPI::max(given, geometry.comm()));
     const double scale = body_size + given_displacement;
-    check_bounded(cell_maximum<dim>(geometry, [this](const unsigned int c) { return u[c].norm(); }),
-                  parameters.displacement_bound * scale, "Solid", clock.step_name(), "max |u|", "m",
+    const CellMaximum<dim> largest =
+      cell_maximum<dim>(geometry, [this](const unsigned int c) { return u[c].norm(); });
+    largest_displacement_ratio_seen =
+      std::max(largest_displacement_ratio_seen, largest.value / scale);
+    check_bounded(largest, parameters.displacement_bound * scale, "Solid", clock.step_name(),
+                  "max |u|", "m",
                   Utilities::to_string(parameters.displacement_bound) +
                     " x (the body's diameter + the largest given displacement) = " +
                     Utilities::to_string(parameters.displacement_bound) + " x " +

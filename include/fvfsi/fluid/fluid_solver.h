@@ -187,8 +187,10 @@ namespace fvfsi
     /// kinematic), sqrt(|g| L) of the body force over the domain's diameter L, the initial
     /// velocity. The divergence guard bounds max |u| by Velocity bound times U.
     double velocity_scale() const { return scale_U; }
-    /// max |u| over the cells / velocity_scale() after the last solve, the guard's ratio.
+    /// max |u| over the cells / velocity_scale() after the last solve, the guard's ratio...
     double velocity_ratio() const { return last_velocity_ratio; }
+    /// ... and its largest value in the run so far (summary.json: max_velocity_over_scale).
+    double largest_velocity_ratio() const { return largest_velocity_ratio_seen; }
     /// Velocity u [m/s], pressure p [Pa] and vorticity [1/s] (2D: dv/dx - du/dy; 3D: its
     /// magnitude) as output fields.
     void add_output_fields(OutputFields<dim>& fields) const;
@@ -312,11 +314,12 @@ namespace fvfsi
     /// Steady: alpha in use (Momentum relaxation, lowered by solve_steady() where the pseudo
     /// steps stop making progress; the steady solution does not depend on it).
     double relaxation = 1;
-    double last_change = 0;         ///< relative_change()
-    double scale_U = 0;             ///< velocity_scale(), the running maximum [m/s]
-    double last_error = 0;          ///< step_error()
-    double domain_length = 0;       ///< the domain's diameter L [m]
-    double last_velocity_ratio = 0; ///< velocity_ratio()
+    double last_change = 0;                 ///< relative_change()
+    double scale_U = 0;                     ///< velocity_scale(), the running maximum [m/s]
+    double last_error = 0;                  ///< step_error()
+    double domain_length = 0;               ///< the domain's diameter L [m]
+    double last_velocity_ratio = 0;         ///< velocity_ratio()
+    double largest_velocity_ratio_seen = 0; ///< largest_velocity_ratio()
     // The state a time step starts from (after extrapolation), for repeated solves of the step:
     // the fields and the gradients the boundary values are extrapolated with (u_b at outlets,
     // p_b at walls), so that every solve of the step starts from the same boundary values too.

@@ -99,6 +99,9 @@ namespace fvfsi
     /// Venant-Kirchhoff; 1 for the linear model). Below 1/sqrt(3) (solid_solver.cc) the model is
     /// past its limit point in compression.
     double least_stretch() const { return least_stretch_seen; }
+    /// The largest max |u| / (body diameter + largest given displacement) after any solve so far:
+    /// the divergence guard's ratio (Solid/Displacement bound).
+    double largest_displacement_ratio() const { return largest_displacement_ratio_seen; }
 
     /// u at the cell centres [m] (ghost values up to date).
     const CellVectorField<dim>& displacement() const { return u; }
@@ -157,6 +160,7 @@ namespace fvfsi
     void check_bounded_displacement();
     double body_size = 0;          ///< the body's diameter [m]
     double given_displacement = 0; ///< the largest given boundary displacement so far [m]
+    double largest_displacement_ratio_seen = 0; ///< largest_displacement_ratio()
     void update_gradients();
     /// `with_ghosts = false`: the present variant's gradients of owned cells only (the boundary
     /// sweeps read no other); the other variants always update the ghosts.
