@@ -41,10 +41,13 @@ def matrix(path):
         corr = ("%.2f / %d" % (row["correctors_mean"], row["correctors_max"])
                 if row.get("correctors_mean") is not None else "4 (fixed)")
         drag = "%.2f" % row["drag"] if st == "stable" and row["drag"] is not None else "-"
-        what = st if st != "stopped with a message" else "stopped: " + row["message"][:90]
+        what = st
+        if st == "stopped with a message":
+            m = row["message"].replace("fvfsi: error: Fluid: the solution ", "")
+            what = "stopped: " + (m.split(" (t =")[0] if "diverges" in m else m)
         print("| %d | %d | %d | %s | %g / %s | %s | %s | %s | %s | %s | %.1f |" % (
             row["aspect"], row["r"], row["cells"], row["inflow"], row["courant_target"],
-            "%.1f" % row["max_courant"] if row["max_courant"] is not None else "-", row["code"],
+            "%.3g" % row["max_courant"] if row["max_courant"] is not None else "-", row["code"],
             what, drag, err, corr if row["code"] == "fvfsi" else "4 (fixed)", row["wall_s"]))
     silent = [r for r in rows if status(r, end) == "silent failure" and r["code"] == "fvfsi"]
     print("\nfvfsi rows with a silent failure: %d" % len(silent))
