@@ -85,9 +85,10 @@ namespace fvfsi
       "face velocities F_f / S_f by more than Pressure corrector tolerance times their largest "
       "value, up to this many (a number below Pressure correctors: exactly Pressure correctors). "
       "PISO's explicit correctors converge the step's pressure-velocity coupling only at small "
-      "Courant numbers; at Courant numbers of 4 and more two correctors leave an error that grows "
-      "from step to step (doc/results/hard_cases.md). The count of each step is the column "
-      "`correctors` of the history. A coupling iteration repeats the first solve's count.",
+      "Courant numbers: on the plate of prm/wall_plate_channel.prm at Courant 4.3 two correctors "
+      "per step leave an error that grows from step to step until the run diverges, with these "
+      "defaults it runs to Courant 20 (doc/results/hard_cases.md). The count of each step is the "
+      "column `correctors` of the history; a coupling iteration repeats the first solve's count.",
       Patterns::Integer(1, 100));
     prm.add_parameter("Pressure corrector tolerance", pressure_corrector_tolerance,
                       "See Max pressure correctors.", Patterns::Double(0, 1));
