@@ -58,16 +58,16 @@ namespace fvfsi
     const CellMaximum<dim> largest =
       cell_maximum<dim>(geometry, [this](const unsigned int c) { return u[c].norm(); });
     // Nothing drives the flow (U = 0): no scale to compare with.
-    last_velocity_ratio = scale_U > 0 ? largest.value / scale_U : 0;
-    largest_velocity_ratio_seen = std::max(largest_velocity_ratio_seen, last_velocity_ratio);
-    if (scale_U > 0)
-      check_bounded(largest, prm.velocity_bound * scale_U, "Fluid", step_name(), "max |u|", "m/s",
-                    Utilities::to_string(prm.velocity_bound) +
-                      " x the velocity scale U = " + Utilities::to_string(scale_U) +
-                      " m/s of the boundary data, body force and initial velocity; "
-                      "Fluid/Velocity bound",
-                    "reduce Time/Time step (or set Time/Adaptive = Courant), or raise Fluid/Max "
-                    "pressure correctors");
+    if (scale_U == 0)
+      return;
+    largest_velocity_ratio_seen = std::max(largest_velocity_ratio_seen, largest.value / scale_U);
+    check_bounded(largest, prm.velocity_bound * scale_U, "Fluid", step_name(), "max |u|", "m/s",
+                  Utilities::to_string(prm.velocity_bound) +
+                    " x the velocity scale U = " + Utilities::to_string(scale_U) +
+                    " m/s of the boundary data, body force and initial velocity; "
+                    "Fluid/Velocity bound",
+                  "reduce Time/Time step (or set Time/Adaptive = Courant), or raise Fluid/Max "
+                  "pressure correctors");
   }
 
   template double FluidSolver<2>::data_velocity_scale() const;

@@ -107,8 +107,9 @@ namespace fvfsi
       "velocity at inlets and moving walls, sqrt of the outlets' kinematic pressure differences, "
       "sqrt(|g| L) of the body force over the domain's diameter L, the initial velocity; the "
       "largest so far). Otherwise the run stops, naming the step, the value and the cell, and "
-      "writes its last good state. The shipped cases stay below 3 U "
-      "(doc/results/hard_cases.md); a flow that legitimately runs faster than 10 U (a jet "
+      "writes its last good state. The shipped cases measured in "
+      "doc/results/hard_cases.md stay below 2.5 U; a flow that legitimately runs faster than 10 U "
+      "(a jet "
       "through a narrow contraction) needs a larger bound.",
       Patterns::Double(1, 1e10));
     prm.add_parameter("Preconditioner update interval", preconditioner_update_interval,

@@ -83,8 +83,6 @@ namespace fvfsi
     void advance();
     /// Take `dt` from the next advance() on [s].
     void set_time_step(double dt) { next_dt = dt; }
-    /// True if Time/Adaptive is not none.
-    bool adaptive() const { return mode != Adaptive::none; }
     /// Adaptive time steps: the next dt from the step just solved, its largest Courant number
     /// and its error estimate (the one the mode reads), within the growth limit, below Max time
     /// step, and ending on the end time rather than a sliver short of it. No-op if not adaptive.

@@ -182,14 +182,8 @@ namespace fvfsi
     double continuity_error() const;
     /// max over cells of the Courant number dt sum_f |phi_f| / (2 V_P).
     double courant_number() const;
-    /// U [m/s], the largest speed the data of the run have set so far: given boundary velocities
-    /// (inlets, moving walls), sqrt(dp) of the outlets' pressure differences (Bernoulli, p
-    /// kinematic), sqrt(|g| L) of the body force over the domain's diameter L, the initial
-    /// velocity. The divergence guard bounds max |u| by Velocity bound times U.
-    double velocity_scale() const { return scale_U; }
-    /// max |u| over the cells / velocity_scale() after the last solve, the guard's ratio...
-    double velocity_ratio() const { return last_velocity_ratio; }
-    /// ... and its largest value in the run so far (summary.json: max_velocity_over_scale).
+    /// The largest max |u| / U after any solve so far, U the velocity scale of the divergence
+    /// guard (data_velocity_scale(); summary.json: max_velocity_over_scale).
     double largest_velocity_ratio() const { return largest_velocity_ratio_seen; }
     /// Velocity u [m/s], pressure p [Pa] and vorticity [1/s] (2D: dv/dx - du/dy; 3D: its
     /// magnitude) as output fields.
@@ -273,7 +267,10 @@ namespace fvfsi
     /// The divergence guard (fv/divergence_guard.h): raises U by this step's data, then throws a
     /// DivergenceError if max |u| > Velocity bound x U.
     void check_bounded_velocity();
-    /// This step's data's speed (see velocity_scale()).
+    /// This step's data's speed [m/s]: given boundary velocities (inlets, moving walls),
+    /// sqrt(dp) of the outlets' pressure differences (Bernoulli, p kinematic), sqrt(|g| L) of the
+    /// body force over the domain's diameter L. The guard's U is its running maximum, started
+    /// from the initial velocity's; it bounds max |u| by Velocity bound times U.
     double data_velocity_scale() const;
     /// "time step N (t = ... s)" or "pseudo time step N", for messages.
     std::string step_name() const;
@@ -315,10 +312,9 @@ namespace fvfsi
     /// steps stop making progress; the steady solution does not depend on it).
     double relaxation = 1;
     double last_change = 0;                 ///< relative_change()
-    double scale_U = 0;                     ///< velocity_scale(), the running maximum [m/s]
+    double scale_U = 0;                     ///< U, the running maximum [m/s]
     double last_error = 0;                  ///< step_error()
     double domain_length = 0;               ///< the domain's diameter L [m]
-    double last_velocity_ratio = 0;         ///< velocity_ratio()
     double largest_velocity_ratio_seen = 0; ///< largest_velocity_ratio()
     // The state a time step starts from (after extrapolation), for repeated solves of the step:
     // the fields and the gradients the boundary values are extrapolated with (u_b at outlets,
