@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""The Markdown tables of doc/results/hard_cases.md from hard_cases.json (hard_cases.py) and
-hard_cases_benchmarks.jsonl (hard_cases_benchmarks.sh).
+"""The Markdown tables of doc/results/hard_cases.md from hard_cases.json (hard_cases.py),
+hard_cases_benchmarks.jsonl (hard_cases_benchmarks.sh), hard_cases_pimple.jsonl
+(hard_cases_pimple.py) and hard_cases_fsi.jsonl (hard_cases_fsi.py).
 
 usage: python3 doc/results/hard_cases_table.py [hard_cases.json] [hard_cases_benchmarks.jsonl]
 """
@@ -71,7 +72,61 @@ def benchmarks(path):
                 " / ".join("%g" % x for x in last.get("correctors_min_mean_max", []))))
 
 
+def pimple(matrix_path, path):
+    """PISO (the matrix) beside PIMPLE with relaxation, at the same steps."""
+    reference = {}
+    for x in json.load(open(matrix_path))["rows"]:
+        if x["code"] == "fvfsi" and x["r"] == 3 and x["courant_target"] == 1:
+            reference[(x["aspect"], x["inflow"])] = x["drag"]
+    rows = [json.loads(line) for line in open(path) if line.strip()]
+    print("CPU: %s; command: `python3 doc/results/hard_cases_pimple.py build/fvfsi`, settings: %s\n"
+          % (rows[0]["cpu"], ", ".join(rows[0]["settings"])))
+    print("| aspect | r | inflow | Courant | PISO: status | drag vs finest | wall [s] | PIMPLE: "
+          "status | drag vs finest | outer loops per step (mean / max) | correctors per step "
+          "(mean) | wall [s] |")
+    print("|---:|---:|---|---:|---|---:|---:|---|---:|---|---:|---:|")
+    for row in rows:
+        ref = reference[(row["aspect"], row["inflow"])]
+        piso = "%+.2f%%" % (100 * (row["piso_drag"] / ref - 1)) if row["piso_status"] == "stable" else "-"
+        ok = row["status"] == "stable"
+        print("| %d | %d | %s | %g | %s | %s | %.1f | %s | %s | %s | %s | %.1f |" % (
+            row["aspect"], row["r"], row["inflow"], row["courant_target"],
+            row["piso_status"].replace("stopped with a message", "stopped by the guard"), piso,
+            row["piso_wall_s"], row["status"],
+            "%+.2f%%" % (100 * (row["drag"] / ref - 1)) if ok else "-",
+            "%.2f / %d" % (row["outer_mean"], row["outer_max"]) if row["outer_mean"] else "-",
+            "%.1f" % row["correctors_mean"] if row["correctors_mean"] else "-", row["wall_s"]))
+
+
+def fsi(path):
+    rows = [json.loads(line) for line in open(path) if line.strip()]
+    print("CPU: %s; command: `python3 doc/results/hard_cases_fsi.py build/fvfsi`\n" % rows[0]["cpu"])
+    print("| case | method | tolerance | status | coupling iterations per step (mean / max) | "
+          "max |u_y(A)| [mm] | u_y(A) error vs the row's reference | wall [s] |")
+    print("|---|---|---:|---|---|---:|---:|---:|")
+    for row in rows:
+        ok = row["status"] == "stable"
+        what = row["status"]
+        if row["status"] == "stopped with a message":
+            what = "stopped: " + row["message"].replace("fvfsi: error: ", "")[:90]
+        print("| %s | %s | %g | %s | %s | %s | %s | %.1f |" % (
+            row["row"], row["method"], row["tolerance"], what,
+            "%.2f / %d" % (row["iterations_mean"], row["iterations_max"])
+            if row["iterations_mean"] is not None else "-",
+            "%.3f" % (1e3 * row["uy_A_max"]) if ok else "-",
+            ("%.1e" % row["uy_A_error"]) if "uy_A_error" in row else
+            ("(reference)" if ok and row["tolerance"] < 1e-6 else "-"), row["wall_s"]))
+    silent = [r for r in rows if r["status"] == "silent failure"]
+    print("\nrows with a silent failure: %d" % len(silent))
+
+
 if __name__ == "__main__":
+    if len(sys.argv) > 1 and sys.argv[1] == "pimple":
+        pimple(os.path.join(HERE, "hard_cases.json"), os.path.join(HERE, "hard_cases_pimple.jsonl"))
+        sys.exit(0)
+    if len(sys.argv) > 1 and sys.argv[1] == "fsi":
+        fsi(os.path.join(HERE, "hard_cases_fsi.jsonl"))
+        sys.exit(0)
     matrix(sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "hard_cases.json"))
     print()
     benchmarks(sys.argv[2] if len(sys.argv) > 2 else

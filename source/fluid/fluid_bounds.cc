@@ -66,8 +66,10 @@ namespace fvfsi
                     " x the velocity scale U = " + Utilities::to_string(scale_U) +
                     " m/s of the boundary data, body force and initial velocity; "
                     "Fluid/Velocity bound",
-                  "reduce Time/Time step (or set Time/Adaptive = Courant), or raise Fluid/Max "
-                  "pressure correctors");
+                  "reduce Time/Time step (or set Time/Adaptive = Courant), raise Fluid/Max "
+                  "pressure correctors, or at large Courant numbers take relaxed PIMPLE outer "
+                  "loops (Fluid/Outer correctors = 20, Outer tolerance = 1e-3, Outer "
+                  "relaxation = 0.7; doc/results/hard_cases.md)");
   }
 
   template double FluidSolver<2>::data_velocity_scale() const;

@@ -68,9 +68,25 @@ namespace fvfsi
       "Steady: limit of pseudo time steps (exceeding it stops the run with an error).",
       Patterns::Integer(1));
     prm.add_parameter("Outer correctors", outer_correctors,
-                      "Outer (PIMPLE) loops per time step: momentum re-assembled with the latest "
-                      "fluxes; 1 = plain PISO.",
+                      "Outer (PIMPLE) loops per time step, at most: momentum re-assembled with the "
+                      "latest fluxes; 1 = plain PISO. The count of each step is the column "
+                      "`outer` of the history.",
                       Patterns::Integer(1, 1000));
+    prm.add_parameter(
+      "Outer tolerance", outer_tolerance,
+      "Transient, Outer correctors > 1: once an outer loop changed the face velocities F_f / S_f "
+      "by less than this times their largest value, one final loop (unrelaxed) ends the step; "
+      "0: always Outer correctors loops. The last loop is final in either case.",
+      Patterns::Double(0, 1));
+    prm.add_parameter(
+      "Outer relaxation", outer_relaxation,
+      "Transient: under-relaxation alpha of the momentum equation in every outer loop but the "
+      "final one, as a pseudo time step within the time step: a*_P (1 - alpha) / alpha is added "
+      "to the time derivative's c0_P and c0_f, with the previous outer loop's u and F as the old "
+      "values (the consistent Rhie-Chow flux of the steady SIMPLE iteration). The final loop is "
+      "unrelaxed, so the converged step is PISO's. Unrelaxed outer loops diverge at large "
+      "Courant numbers on stretched cells (doc/results/hard_cases.md).",
+      Patterns::Double(0.01, 1));
     prm.add_parameter("Flux extrapolation", flux_extrapolation,
                       "BDF2 steps: the first outer loop linearises the convection with the "
                       "extrapolated flux 2 F^n - F^(n-1) (second order in time with one outer "

@@ -95,21 +95,25 @@ namespace fvfsi
   {
     // Time derivative of V u (backward Euler / BDF2) and body force: c0_P = c1 V^o/V - c2 V^oo/V
     // (= c0 on a fixed mesh). Steady: a local pseudo time step, c0_P = a*_P (1 - alpha) / alpha
-    // from the spatial coefficient a*_P assembled so far.
+    // from the spatial coefficient a*_P assembled so far. Transient outer loops relaxed by
+    // alpha < 1 add such a pseudo time step to the physical one, with the previous outer loop's
+    // u as its old value (the final loop has alpha = 1: the converged step is unchanged).
     const auto [c0, c1, c2] = time_coefficients();
     (void)c0;
-    const double alpha = relaxation;
+    const double alpha = prm.transient ? outer_alpha : relaxation;
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
     {
       const double V = geometry.cell_volume[c];
-      c0_cell[c] = prm.transient ? (c1 * V_old[c] - c2 * V_old2[c]) / V
-                                 : momentum.diagonal[c] / V * (1 - alpha) / alpha;
+      const double pseudo = momentum.diagonal[c] / V * (1 - alpha) / alpha;
+      c0_cell[c] = prm.transient ? (c1 * V_old[c] - c2 * V_old2[c]) / V + pseudo : pseudo;
       const double c1V = prm.transient ? c1 * V_old[c] : c0_cell[c] * V;
       momentum.diagonal[c] += c0_cell[c] * V;
       for (unsigned int j = 0; j < dim; ++j)
       {
         B_time[j][c] = c1V * u_old.components[j].local_element(c) -
                        c2 * V_old2[c] * u_old2.components[j].local_element(c);
+        if (prm.transient && alpha < 1)
+          B_time[j][c] += pseudo * V * u.components[j].local_element(c);
         B_rest[j].local_element(c) += V * body_force_value[j][c];
       }
     }
@@ -190,8 +194,9 @@ namespace fvfsi
           : face.w / a_star.local_element(face.P) + (1 - face.w) / a_star.local_element(face.N);
       a_star_f[f] = 1 / inverse_a_star;
       const auto r = volume_ratios(f);
-      c0_face[f] =
-        prm.transient ? c1 * r[0] - c2 * r[1] : a_star_f[f] * (1 - relaxation) / relaxation;
+      const double alpha = prm.transient ? outer_alpha : relaxation;
+      const double pseudo = a_star_f[f] * (1 - alpha) / alpha; // as c0_P's, on the face
+      c0_face[f] = prm.transient ? c1 * r[0] - c2 * r[1] + pseudo : pseudo;
       gamma_p[f] = 1 / (c0_face[f] + a_star_f[f]);
       gamma_c[f] = gamma_p[f];
       if (simplec()) // 1 / (a - H1)_f, interpolated as a*_f
@@ -288,8 +293,12 @@ namespace fvfsi
       const double F_o = F_old[f] + u_o * (face.S - S_old[f]);
       const double F_oo = F_old2[f] + u_oo * (face.S - S_old2[f]);
       const auto r = volume_ratios(f);
+      // Steady: the old flux is the last pseudo step's; transient outer loops relaxed by
+      // alpha < 1: also the pseudo time term's, the outer loop's first flux F_outer_start.
       const double c1_f = prm.transient ? c1 * r[0] : c0_face[f];
       F_star[f] = gamma_p[f] * (c1_f * F_o - c2 * r[1] * F_oo + a_star_f[f] * (face.S * h_by_a));
+      if (prm.transient && outer_alpha < 1)
+        F_star[f] += gamma_p[f] * (c0_face[f] - c1 * r[0] + c2 * r[1]) * F_outer_start[f];
       // SIMPLEC: + (Gamma~_f - Gamma_f) S_f (n.grad p)_f with the pressure of the last corrector,
       // so that F = F* - Gamma~_f S_f (n.grad p)_f is SIMPLE's flux once p stops changing.
       if (gamma_c[f] != gamma_p[f])

@@ -53,7 +53,7 @@ namespace fvfsi
     pressure_rhs = geometry.make_cell_vector();
     const unsigned int n_faces = geometry.faces.size();
     for (auto* field : {&F, &F_old, &F_old2, &F_mesh, &F_star, &gamma_p, &gamma_c, &a_star_f,
-                        &boundary_p, &swept, &swept_old, &F_before_corrector})
+                        &boundary_p, &swept, &swept_old, &F_before_corrector, &F_outer_start})
       field->assign(n_faces, 0.0);
     V_old = V_old2 = geometry.cell_volume;
     for (const auto& face : geometry.faces)
@@ -406,9 +406,25 @@ namespace fvfsi
     compute_mesh_fluxes();
     try
     {
+      // PIMPLE: outer loops, each relaxed by Outer relaxation but the final one, until one
+      // changed the face velocities by less than Outer tolerance (then one final loop) or
+      // Outer correctors of them are done. A repeated solve of the step (a coupling iteration)
+      // takes the first solve's count, as for the correctors.
+      const bool repeated = solves_this_step > 1 && !step_correctors.empty();
+      const unsigned int most = repeated ? step_correctors.size() : prm.outer_correctors;
       correctors_used = 0;
-      for (unsigned int outer = 0; outer < prm.outer_correctors; ++outer)
-        solve_outer_iteration(outer, outer + 1 == prm.outer_correctors);
+      bool final = most == 1;
+      for (outer_used = 1;; ++outer_used)
+      {
+        outer_alpha = final || !prm.transient ? 1 : prm.outer_relaxation;
+        F_outer_start = F;
+        solve_outer_iteration(outer_used - 1, final);
+        if (final)
+          break;
+        final =
+          outer_used + 1 == most || (!repeated && prm.outer_tolerance > 0 &&
+                                     face_velocity_change(F_outer_start) < prm.outer_tolerance);
+      }
     }
     catch (const std::exception& e)
     {
@@ -487,7 +503,8 @@ namespace fvfsi
       update_pressure_gradient();
       correct_velocity();
       check_finite("pressure or velocity (pressure corrector)");
-      if (k >= most || (may_be_last && face_velocity_change() < prm.pressure_corrector_tolerance))
+      if (k >= most || (may_be_last && face_velocity_change(F_before_corrector) <
+                                         prm.pressure_corrector_tolerance))
         break;
     }
     if (solves_this_step == 1)
@@ -510,16 +527,16 @@ namespace fvfsi
   }
 
   template <int dim>
-  double FluidSolver<dim>::face_velocity_change() const
+  double FluidSolver<dim>::face_velocity_change(const FaceVector& before) const
   {
-    // max_f |F_f - F_f^before| / S_f over max_f |F_f| / S_f.
+    // max_f |F_f - before_f| / S_f over max_f |F_f| / S_f.
     double change = 0, largest = 0;
     for (unsigned int f = 0; f < geometry.faces.size(); ++f)
     {
       const auto& face = geometry.faces[f];
       if (face.kind == FaceKind::ghost_boundary)
         continue;
-      change = std::max(change, std::abs(F[f] - F_before_corrector[f]) / face.area);
+      change = std::max(change, std::abs(F[f] - before[f]) / face.area);
       largest = std::max(largest, std::abs(F[f]) / face.area);
     }
     change = Utilities::MPI::max(change, geometry.comm());

@@ -97,7 +97,8 @@ namespace fvfsi
         columns.push_back(c);
       columns.push_back("p_" + probes.name(i));
     }
-    columns.push_back("correctors"); // PISO pressure correctors of the step
+    columns.push_back("outer");      // outer (PIMPLE) loops of the step
+    columns.push_back("correctors"); // PISO pressure correctors of the step (all outer loops)
     columns.push_back("dt");         // the step (Time/Adaptive changes it)
     this->open_history("fluid_history.txt", columns);
   }
@@ -174,6 +175,7 @@ namespace fvfsi
       append(line, u);
       line.push_back(p);
     }
+    line.push_back(fluid->outer_iterations_used());
     line.push_back(fluid->pressure_correctors_used());
     line.push_back(clock.time_step());
     history->write_line(line);

@@ -134,6 +134,7 @@ namespace fvfsi
     if (!steady)
     {
       columns.push_back("courant");    // the fluid's largest Courant number
+      columns.push_back("outer");      // the fluid's outer (PIMPLE) loops per solve
       columns.push_back("correctors"); // the fluid's PISO pressure correctors per solve
       columns.push_back("dt"); // the time step of the line (Time step control, Time/Adaptive)
     }
@@ -357,6 +358,7 @@ namespace fvfsi
     append_fluid_probes(line);
     line.push_back(volume_ratio);
     line.push_back(fluid->courant_number());
+    line.push_back(fluid->outer_iterations_used());
     line.push_back(fluid->pressure_correctors_used());
     line.push_back(clock.time_step());
     history->write_line(line);

@@ -43,7 +43,12 @@ namespace fvfsi
     /// steady: SIMPLEC's pressure coefficient 1 / (a_P - H1_P) in place of 1 / a_P
     bool consistent_coupling = false;
 
-    unsigned int outer_correctors = 1;    ///< PIMPLE outer loops per time step (1 = PISO)
+    unsigned int outer_correctors = 1; ///< PIMPLE outer loops per time step, at most (1 = PISO)
+    /// Stop the outer loops once one changed the face velocities by less than this, relative
+    /// (then one final loop); 0: always Outer correctors loops.
+    double outer_tolerance = 0;
+    /// Under-relaxation alpha of the momentum equation in every outer loop but the final one.
+    double outer_relaxation = 1;
     bool flux_extrapolation = true;       ///< BDF2: first outer loop convects with 2 F^n - F^(n-1)
     unsigned int pressure_correctors = 2; ///< PISO pressure correctors per outer loop, at least
     unsigned int max_pressure_correctors = 6; ///< ... and at most (transient)

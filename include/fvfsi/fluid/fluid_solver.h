@@ -121,6 +121,8 @@ namespace fvfsi
     double step_error() const { return last_error; }
     /// The PISO pressure correctors of the last solve, summed over its outer loops.
     unsigned int pressure_correctors_used() const { return correctors_used; }
+    /// The outer (PIMPLE) loops of the last solve.
+    unsigned int outer_iterations_used() const { return outer_used; }
 
     /// Start from the velocity u(x) [m/s] and, if given, the kinematic pressure p(x) / rho
     /// [m^2/s^2] at the cell centres (every time level alike; the fluxes interpolated from u):
@@ -222,9 +224,15 @@ namespace fvfsi
     void solve_outer_iteration(unsigned int outer, bool last);
     /// The least and most pressure correctors of outer loop `outer` of this solve.
     std::pair<unsigned int, unsigned int> corrector_range(unsigned int outer) const;
-    /// max_f |F_f - F_f^before| / S_f over max_f |F_f| / S_f: what the last corrector changed.
-    double face_velocity_change() const;
+    /// max_f |F_f - before_f| / S_f over max_f |F_f| / S_f: what the last corrector (or outer
+    /// loop) changed.
+    double face_velocity_change(const FaceVector& before) const;
     FaceVector F_before_corrector;
+    /// Transient: the fluxes at the start of the outer loop (its relaxation's old values).
+    FaceVector F_outer_start;
+    /// Transient: alpha of the current outer loop (Outer relaxation; 1 in the final loop).
+    double outer_alpha = 1;
+    unsigned int outer_used = 0; ///< outer_iterations_used()
     /// The pressure correctors of each outer loop of the step's first solve.
     std::vector<unsigned int> step_correctors;
     unsigned int correctors_used = 0; ///< pressure_correctors_used()
