@@ -100,6 +100,19 @@ def pimple(matrix_path, path):
 
 def fsi(path):
     rows = [json.loads(line) for line in open(path) if line.strip()]
+    # Errors: u_y(A) of every coupled step against the row's reference (IQN-ILS to 1e-8 with
+    # tight solves), the largest difference over the reference's largest |u_y(A)|.
+    for row in rows:
+        base = row["row"].replace("_tight", "")  # the same case, its solvers tighter
+        refs = [x for x in rows if x["row"] in (row["row"], base) and x["tolerance"] < 1e-6 and
+                x["status"] == "stable"]
+        a, b = row.get("uy_A_coupled"), refs[0].get("uy_A_coupled") if refs else None
+        if row["status"] == "stable" and a and b and len(a) == len(b) and row["tolerance"] > 1e-6:
+            row["uy_A_error"] = max(abs(x - y) for x, y in zip(a, b)) / max(abs(y) for y in b)
+    # Each case together, its reference first.
+    cases = list(dict.fromkeys(r["row"] for r in rows))
+    methods = ["IQN-ILS", "Aitken", "IQN-IMVJ"]
+    rows.sort(key=lambda r: (cases.index(r["row"]), r["tolerance"], methods.index(r["method"])))
     print("CPU: %s; command: `python3 doc/results/hard_cases_fsi.py build/fvfsi`\n" % rows[0]["cpu"])
     print("| case | method | tolerance | status | coupling iterations per step (mean / max) | "
           "max |u_y(A)| [mm] | u_y(A) error vs the row's reference | wall [s] |")
@@ -108,7 +121,12 @@ def fsi(path):
         ok = row["status"] == "stable"
         what = row["status"]
         if row["status"] == "stopped with a message":
-            what = "stopped: " + row["message"].replace("fvfsi: error: ", "")[:90]
+            # the cause: the error's first line without the step's name
+            cause = row.get("error", row["message"]).split("\n")[0]
+            cause = cause.split("): ", 1)[-1] if "): " in cause else cause
+            what = "stopped at t = %s: %s" % (
+                row.get("error", "").split("(t = ")[1].split(" s")[0] if "(t = " in
+                row.get("error", "") else "?", cause[:100])
         print("| %s | %s | %g | %s | %s | %s | %s | %.1f |" % (
             row["row"], row["method"], row["tolerance"], what,
             "%.2f / %d" % (row["iterations_mean"], row["iterations_max"])

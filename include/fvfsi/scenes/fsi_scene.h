@@ -162,6 +162,9 @@ namespace fvfsi
     unsigned int solve_steady();
     /// "time step N (t = ...)" or "the steady coupled solve", for messages.
     std::string step_name() const;
+    /// What to change when the coupling iterations diverge or stall, for the Coupling/Method
+    /// in use.
+    std::string coupling_advice() const;
     /// Steps 2a-2e of Algorithm 1 for the displacement d; returns the solid's answer d~.
     InterfaceVector coupling_iteration(const InterfaceVector& d);
     /// Move the fluid mesh so that its interface vertices sit at reference + d.
