@@ -56,7 +56,10 @@
 // step's F^n, u^n (OpenFOAM's PISO) that lag is O(dt): plain PISO is first order in time. With
 // the extrapolated state F = 2 F^n - F^(n-1), u = 2 u^n - u^(n-1) the lag is O(dt^2) and one
 // outer loop is second order (tests/fluid/fluid_taylor_green). Outer correctors (PIMPLE)
-// re-assemble with the latest F and u.
+// re-assemble with the latest F and u, until one changes the face velocities by less than Outer
+// tolerance; every loop but the final one is under-relaxed (Outer relaxation alpha) as a pseudo
+// time step a*_P (1 - alpha) / alpha added to c0_P and c0_f, whose old values are the previous
+// loop's u and F, so that the converged step is PISO's (doc/results/hard_cases.md, section 6).
 //
 // The solver knows nothing about coupling or mesh motion drivers: it reads the geometry and the
 // clock (TimeControl) it is given and exposes velocity, pressure, fluxes and patch forces. Its life
