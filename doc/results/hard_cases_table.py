@@ -115,7 +115,7 @@ def fsi(path):
     rows.sort(key=lambda r: (cases.index(r["row"]), r["tolerance"], methods.index(r["method"])))
     print("CPU: %s; command: `python3 doc/results/hard_cases_fsi.py build/fvfsi`\n" % rows[0]["cpu"])
     print("| case | method | tolerance | status | coupling iterations per step (mean / max) | "
-          "max |u_y(A)| [mm] | u_y(A) error vs the row's reference | wall [s] |")
+          "max abs u_y(A) [mm] | u_y(A) error vs the row's reference | wall [s] |")
     print("|---|---|---:|---|---|---:|---:|---:|")
     for row in rows:
         ok = row["status"] == "stable"
