@@ -46,6 +46,22 @@ namespace fvfsi_test
     return rows;
   }
 
+  /// Column `name` of a history table (its `# t drag ...` header names the columns).
+  inline std::vector<double> history_column(const std::string& file, const std::string& name)
+  {
+    std::ifstream in(file);
+    std::string header;
+    std::getline(in, header);
+    std::istringstream names(header.substr(1));
+    unsigned int index = 0;
+    for (std::string n; names >> n && n != name;)
+      ++index;
+    std::vector<double> values;
+    for (const auto& row : read_table(file))
+      values.push_back(row.at(index));
+    return values;
+  }
+
   /// Two history tables (read_table) line by line: the largest |a - b| of the vector made of
   /// `columns` (e.g. drag and lift), relative to the largest |b| of that vector; 1 if the tables
   /// differ in length or are empty.

@@ -19,6 +19,8 @@ import subprocess
 import sys
 import time
 
+from hard_cases_fsi import history  # a history file as a list of {column: value}
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 WINDOW = (2.5, 3.0)
@@ -35,12 +37,6 @@ RUNS = {
     "error_3e-4": ["Time/Time step=0.002", "Time/Adaptive=error", "Time/Error tolerance=3e-4"],
     "fixed_0.5ms": ["Time/Time step=0.0005"],
 }
-
-
-def history(path):
-    with open(path) as f:
-        names = f.readline().lstrip("#").split()
-        return [dict(zip(names, map(float, line.split()))) for line in f if line.strip()]
 
 
 def measure(rows):

@@ -25,22 +25,6 @@
 
 using namespace fvfsi_test;
 
-/// Column `name` of a fluid_history.txt.
-std::vector<double> column(const std::string& file, const std::string& name)
-{
-  std::ifstream in(file);
-  std::string header;
-  std::getline(in, header);
-  std::istringstream names(header.substr(1));
-  unsigned int index = 0;
-  for (std::string n; names >> n && n != name;)
-    ++index;
-  std::vector<double> values;
-  for (const auto& row : read_table(file))
-    values.push_back(row.at(index));
-  return values;
-}
-
 int main(int argc, char** argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -50,8 +34,8 @@ int main(int argc, char** argv)
   // (a)
   const auto shipped = run_fluid_case("wall_plate_channel", 0.0025, {"Time/End time=0.1"});
   const double drag = shipped->body_force()[0];
-  const auto correctors = column(history, "correctors");
-  const auto courant = column(history, "courant");
+  const auto correctors = history_column(history, "correctors");
+  const auto courant = history_column(history, "courant");
   const auto [least, most] = std::minmax_element(correctors.begin(), correctors.end());
   const auto reference = run_fluid_case("wall_plate_channel", 0.0025,
                                         {"Time/End time=0.1", "Fluid/Pressure correctors=6"});
@@ -72,9 +56,9 @@ int main(int argc, char** argv)
   settings.insert(settings.end(), {"Time/Adaptive=Courant", "Time/Max Courant number=2"});
   const auto courant_run = run_fluid_case("wall_plate_channel", 1e-4, settings);
   const double drag_b = courant_run->body_force()[0];
-  const auto co = column(history, "courant");
-  const auto dt = column(history, "dt");
-  const auto t = column(history, "t");
+  const auto co = history_column(history, "courant");
+  const auto dt = history_column(history, "dt");
+  const auto t = history_column(history, "t");
   double worst_courant = 0, worst_growth = 0;
   for (unsigned int i = 2; i < co.size(); ++i)
     worst_courant = std::max(worst_courant, co[i] / 2);
@@ -89,8 +73,8 @@ int main(int argc, char** argv)
   settings = tutorial_mesh;
   settings.insert(settings.end(), {"Time/Adaptive=error", "Time/Error tolerance=1e-3"});
   const auto error_run = run_fluid_case("wall_plate_channel", 1e-4, settings);
-  const auto dt_e = column(history, "dt");
-  const auto t_e = column(history, "t");
+  const auto dt_e = history_column(history, "dt");
+  const auto t_e = history_column(history, "t");
   out << "(c) reaches t = 0.3 s: " << yes_no(std::abs(t_e.back() - 0.3) < 1e-9)
       << ", the last step larger than the tenth: " << yes_no(dt_e.back() > dt_e.at(9))
       << ", drag at t = 0.3 s within 2% of (b)'s: "

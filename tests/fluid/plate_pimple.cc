@@ -23,22 +23,6 @@
 
 using namespace fvfsi_test;
 
-/// Column `name` of a fluid_history.txt.
-std::vector<double> column(const std::string& file, const std::string& name)
-{
-  std::ifstream in(file);
-  std::string header;
-  std::getline(in, header);
-  std::istringstream names(header.substr(1));
-  unsigned int index = 0;
-  for (std::string n; names >> n && n != name;)
-    ++index;
-  std::vector<double> values;
-  for (const auto& row : read_table(file))
-    values.push_back(row.at(index));
-  return values;
-}
-
 int main(int argc, char** argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
@@ -64,7 +48,7 @@ int main(int argc, char** argv)
   settings.insert(settings.end(), {"Fluid/Outer correctors=20", "Fluid/Outer tolerance=1e-3",
                                    "Fluid/Outer relaxation=0.7"});
   const auto pimple = run_fluid_case("wall_plate_channel", dt, settings);
-  const auto outer = column(history, "outer");
+  const auto outer = history_column(history, "outer");
   const auto [least, most] = std::minmax_element(outer.begin(), outer.end());
   const double drag = pimple->body_force()[0];
   out << "(a) PIMPLE runs 30 steps: " << yes_no(outer.size() == 30)
