@@ -5,7 +5,7 @@ fsi2.sh).
 For a run's fsi_history.txt and a window [T0, T1] (the last seconds, the solution periodic):
 mean = (max + min) / 2 and amplitude = (max - min) / 2 over the last full period of the flag's
 oscillation (of u_y(A)) in the window, frequency = 1 / period from the up-crossings of each
-quantity's mid level in the window (Turek and Hron's definitions, ../shared/reference/benchmarks.md
+quantity's mid level in the window (Turek and Hron's definitions, doc/reference/benchmarks.md
 section 2), for u_x(A), u_y(A), drag and lift; the amplitude of every period in the window (it has
 settled when they agree); the errors against the refined Featflow references and the paper's
 Table 2.

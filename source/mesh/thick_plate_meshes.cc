@@ -3,7 +3,7 @@
 // and the plate (fvfsi_thick_plate), both block-structured hexahedra for a cell size h at the
 // plate.
 //
-// Geometry [m] (../shared/reference/benchmarks.md section 5): the channel [0, 1.5] x [0, 0.4] x
+// Geometry [m] (doc/reference/benchmarks.md section 5): the channel [0, 1.5] x [0, 0.4] x
 // [-0.4, 0], symmetry plane z = 0; the plate [0.45, 0.55] x [0, 0.2] x [-0.2, 0] stands on the
 // channel floor y = 0 and reaches the symmetry plane. Side view (z = const > -0.2) and the
 // spacings:

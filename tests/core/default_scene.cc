@@ -2,7 +2,7 @@
 // demo (prm/fsi_demo.prm: the Turek-Hron FSI1 flag on coarse meshes, 300 time steps to a state at
 // rest), prints progress and its result, writes VTU/PVD fields, fsi_history.txt and the PNG plot
 // of the history, and says where. Run in-process (fvfsi::run_application, what main() calls).
-// Asserted against the FSI1 reference (../shared/reference/benchmarks.md, section 2: u(A) =
+// Asserted against the FSI1 reference (doc/reference/benchmarks.md, section 2: u(A) =
 // (2.27e-5, 8.209e-4) m, drag 14.295 N/m, lift 0.7638 N/m) with bounds that hold on these coarse
 // meshes (3 393 fluid and 328 solid cells; measured -2.9%, -2.2%, -0.5%, +0.04%): u_x(A) and
 // u_y(A) within 4%, drag and lift within 1.5%. np = 1 and np = 2 print the same verdicts.
