@@ -100,9 +100,8 @@ namespace fvfsi
       "Coupling/Solid interface");
     traction_map = std::make_unique<FaceInterpolation<dim>>(*fluid_zone, *solid_zone);
     displacement_map = std::make_unique<VertexProjection<dim>>(*solid_zone, *fluid_zone);
-    acceleration = std::make_unique<CouplingAcceleration>(prm.coupling);
-    d.reinit(dim * fluid_zone->n_points());
-    d_old = d_older = d;
+    coupling = std::make_unique<PartitionedCoupling>(prm.coupling, dim * fluid_zone->n_points(),
+                                                     pcout, &timer);
   }
 
   template <int dim>
@@ -250,100 +249,33 @@ namespace fvfsi
     fluid->begin_time_step();
     solid->begin_time_step();
     vertices_old = fluid_fv->vertices();
-    d = d_old;
-    if (clock.step() > 2)
-    {
-      // d^n + omega (d^n - d^(n-1)), omega = dt / dt_old: 2 d^n - d^(n-1) for equal steps.
-      const double omega = clock.time_step() / clock.previous_time_step();
-      d.sadd(1 + omega, -omega, d_older);
-    }
-
+    coupling->begin_time_step(clock);
     const unsigned int k = converge_interface(); // 2
     // 3: accept the step.
     fluid->end_time_step();
     solid->end_time_step();
-    d_older = d_old;
-    d_old = d;
-    record_time_history(k, acceleration->relative_residual());
+    coupling->end_time_step();
+    record_time_history(k, coupling->relative_residual());
     return k;
   }
 
   template <int dim>
   unsigned int FsiScene<dim>::converge_interface()
   {
-    acceleration->new_time_step();
-    double residual = 0;
     const std::string impulsive_start_hint =
       !steady && result.n_coupled_steps == 0
         ? "\n(the first coupled time step: if the flow starts impulsively, let it develop on the "
           "fixed mesh first, Coupling/Start time)"
         : "";
-    for (unsigned int k = 1; k <= prm.coupling.max_iterations; ++k)
-    {
-      InterfaceVector next;
-      double d_tilde_norm = 0;
-      try
+    PartitionedCoupling::IterationObserver observer;
+    if (steady) // a line of the steady history per iteration, and the iteration limit
+      observer = [this](const unsigned int k, const double residual)
       {
-        const InterfaceVector d_tilde = coupling_iteration(d); // 2a-2e
-        d_tilde_norm = d_tilde.l2_norm();
-        TimerOutput::Scope scope(timer, "acceleration");
-        next = acceleration->next(d, d_tilde); // 2f: Eqs 30-31, Aitken or IQN
-      }
-      catch (const std::exception& e)
-      {
-        throw std::runtime_error(
-          "FSI: at " + step_name() + ", coupling iteration " + std::to_string(k) +
-          (k > 1
-             ? " (relative interface residual before it: " + Utilities::to_string(residual) + ")"
-             : std::string()) +
-          ": " + e.what() +
-          (k > 2
-             ? "\n(a coupling iteration that diverges ends like this: " + coupling_advice() + ")"
-             : std::string()) +
-          impulsive_start_hint);
-      }
-      residual = acceleration->relative_residual();
-      if (!std::isfinite(residual))
-        throw std::runtime_error("FSI: the interface residual is not finite at " + step_name() +
-                                 ", coupling iteration " + std::to_string(k) +
-                                 impulsive_start_hint);
-      if (steady)
         record_steady_iteration(k, residual);
-      else if (prm.coupling.iteration_log)
-        pcout << "fvfsi: " << step_name() << ", coupling iteration " << k
-              << ": relative interface residual " << residual << ", |d| = " << d.l2_norm()
-              << " m, |d~| = " << d_tilde_norm << " m\n";
-      if (acceleration->converged() || (steady && clock.step_limit_reached(k)))
-        return k; // d is the accepted displacement: both solvers' states belong to it
-      d = next;
-    }
-    throw std::runtime_error("FSI: the coupling iterations did not converge at " + step_name() +
-                             ": relative interface residual " + Utilities::to_string(residual) +
-                             " after " + std::to_string(prm.coupling.max_iterations) +
-                             " iterations (" + coupling_advice() +
-                             "; or raise Coupling/Max iterations)");
-  }
-
-  template <int dim>
-  std::string FsiScene<dim>::coupling_advice() const
-  {
-    using Method = CouplingParameters::Method;
-    switch (prm.coupling.method)
-    {
-      case Method::fixed:
-        return "use Coupling/Method = IQN-ILS or Aitken, or a smaller Coupling/Relaxation";
-      case Method::aitken:
-        return "use Coupling/Method = IQN-ILS, or a smaller Coupling/Relaxation";
-      default:
-        // Measured on the FSI3 flag (doc/results/hard_cases.md, section 7): at the default
-        // solver reductions the interface residual stalls at 5e-7 (FSI3) to 1e-4 (rho_s / rho_f
-        // = 0.1, Poisson's ratio 0.49 and 0.499), and IQN-ILS asked for 1e-8 diverges from the
-        // noise it fits (rho_s / rho_f = 10); with the solves tighter the same cases converge.
-        return "a quasi-Newton coupling fits the fluid's and solid's answers, so they must be "
-               "solved well below Coupling/Tolerance: lower the Residual reduction of the "
-               "Fluid momentum, Fluid pressure, Mesh motion and Solid linear solvers and "
-               "Solid/Outer tolerance, or raise Coupling/Tolerance";
-    }
+        return clock.step_limit_reached(k);
+      };
+    return coupling->converge([this](const InterfaceVector& d) { return coupling_iteration(d); },
+                              step_name(), impulsive_start_hint, observer);
   }
 
   template <int dim>
@@ -438,8 +370,7 @@ namespace fvfsi
           << solid_fv->n_global_cells() << " cells ("
           << selection_name(SolidParameters::model_names, solid_parameters.model) << "), interface "
           << fluid_zone->n_faces() << " fluid / " << solid_zone->n_faces()
-          << " solid faces, coupling "
-          << selection_name(CouplingParameters::method_names, prm.coupling.method) << "\n";
+          << " solid faces, coupling " << prm.coupling.method << "\n";
     const auto [least, most] = traction_map->coverage_range();
     pcout << "fvfsi: interface: the fluid faces cover each solid face " << least << " to " << most
           << " times (1 where the sides match), the fluid points lie within "

@@ -11,7 +11,9 @@ namespace fvfsi
   template <class Archive>
   void FsiScene<dim>::global_state(Archive& archive)
   {
-    archive& clock& d& d_old& d_older&* acceleration& result& volume_ratio;
+    archive& clock;
+    coupling->checkpoint(archive);
+    archive& result& volume_ratio;
     bool has_force = last_force.has_value();
     Tensor<1, dim> force = last_force.value_or(Tensor<1, dim>());
     archive& has_force& force;

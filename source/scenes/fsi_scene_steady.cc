@@ -105,7 +105,8 @@ namespace fvfsi
     rows.clear();
     if (Utilities::MPI::this_mpi_process(comm) == 0) // d is whole on every rank
       for (unsigned int i = 0; i < fluid_zone->n_points(); ++i)
-        rows.emplace_back(d.begin() + i * dim, d.begin() + (i + 1) * dim);
+        rows.emplace_back(coupling->displacement().begin() + i * dim,
+                          coupling->displacement().begin() + (i + 1) * dim);
     write_point_values<dim>(output_directory + "/interface_state.txt", vector_columns<dim>("d", ""),
                             rows.empty() ? std::vector<Point<dim>>() : fluid_zone->points, rows,
                             comm);
@@ -126,12 +127,14 @@ namespace fvfsi
                      [&fluid_state](const Point<dim>& x) { return fluid_state.value(x)[dim]; });
     const PointValues<dim> interface_state(directory + "/interface_state.txt",
                                            vector_columns<dim>("d", ""), parameter);
+    InterfaceVector d = coupling->displacement();
     for (unsigned int i = 0; i < fluid_zone->n_points(); ++i)
     {
       const auto value = interface_state.value(fluid_zone->points[i]);
       for (unsigned int j = 0; j < dim; ++j)
         d[i * dim + j] = value[j];
     }
+    coupling->set_displacement(d);
     pcout << "fvfsi: starting from the state of " << directory << " (" << fluid_state.size()
           << " fluid cells, " << interface_state.size() << " interface points)\n";
   }

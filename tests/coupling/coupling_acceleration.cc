@@ -1,4 +1,4 @@
-// The coupling iteration's update rules (CouplingAcceleration: fixed relaxation, Aitken, IQN-ILS)
+// The coupling iteration's update rules (CouplingMethod: fixed relaxation, Aitken, IQN-ILS)
 // on a model of a strongly coupled interface: the linear map d~ = A d + b with n = 20 unknowns and
 // A symmetric with eigenvalues spread over [-3, 0.5]. Eigenvalues below -1 are what strong added
 // mass does to a Dirichlet-Neumann iteration: plain Gauss-Seidel (omega = 1) diverges, and fixed
@@ -34,11 +34,12 @@ int main(int argc, char** argv)
                               const unsigned int reuse, const bool second_step)
   {
     fvfsi::CouplingParameters p;
-    p.method = method_named(method);
+    p.method = method;
     p.tolerance = 1e-10;
     p.relaxation = omega;
     p.reuse_time_steps = reuse;
-    fvfsi::CouplingAcceleration acceleration(p);
+    const auto coupling_method = fvfsi::CouplingMethod::create(p);
+    fvfsi::CouplingMethod& acceleration = *coupling_method;
     std::vector<double> d(n, 0.0);
     const unsigned int k1 = solve(acceleration, model, b1, d);
     return second_step ? solve(acceleration, model, b2, d) : k1;

@@ -89,7 +89,8 @@ struct Run
 
 Run run(const DriftingModel& model, const fvfsi::CouplingParameters& p)
 {
-  fvfsi::CouplingAcceleration acceleration(p);
+  const auto coupling_method = fvfsi::CouplingMethod::create(p);
+  fvfsi::CouplingMethod& acceleration = *coupling_method;
   Run result;
   result.d.assign(size, 0.0);
   for (unsigned int s = 0; s < steps; ++s)
@@ -105,7 +106,7 @@ fvfsi::CouplingParameters parameters(const std::string& method, const unsigned i
                                      const unsigned int window = 8)
 {
   fvfsi::CouplingParameters p;
-  p.method = method_named(method);
+  p.method = method;
   p.relaxation = 0.4;
   p.tolerance = 1e-10;
   p.reuse_time_steps = reuse;
@@ -175,7 +176,8 @@ void imvj_against_ils(std::ostream& out)
 Run reduction_run(const fvfsi::CouplingParameters& p, bool& agrees, unsigned int (&ended_by)[3])
 {
   const DriftingModel model(0, 0);
-  fvfsi::CouplingAcceleration acceleration(p);
+  const auto coupling_method = fvfsi::CouplingMethod::create(p);
+  fvfsi::CouplingMethod& acceleration = *coupling_method;
   Run result;
   std::vector<double> d(size, 0.0);
   for (unsigned int s = 0; s < steps; ++s)

@@ -3,7 +3,7 @@
 // coupling_imvj: the solid's answer d~ = A d + b with A symmetric, its n eigenvalues spread evenly
 // over [-3, 0.5] (below -1: what strong added mass does to a Dirichlet-Neumann iteration), and the
 // coupling iteration on it.
-#include <fvfsi/coupling/coupling_acceleration.h>
+#include <fvfsi/coupling/coupling_method.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -60,10 +60,10 @@ namespace fvfsi_test
   };
 
   /// One time step: iterations of `model` (a LinearInterfaceModel or one like it) until
-  /// CouplingAcceleration::converged(), or 0 if not within
+  /// CouplingMethod::converged(), or 0 if not within
   /// `max_iterations` (or diverged); d is the start and the result.
   template <typename Model>
-  unsigned int solve(fvfsi::CouplingAcceleration& acceleration, const Model& model,
+  unsigned int solve(fvfsi::CouplingMethod& acceleration, const Model& model,
                      const std::vector<double>& b, std::vector<double>& d,
                      const unsigned int max_iterations = 400)
   {
@@ -83,12 +83,4 @@ namespace fvfsi_test
     return 0;
   }
 
-  /// The method of that name.
-  inline fvfsi::CouplingParameters::Method method_named(const std::string& name)
-  {
-    for (const auto& [n, m] : fvfsi::CouplingParameters::method_names)
-      if (n == name)
-        return m;
-    throw std::invalid_argument("no coupling method " + name);
-  }
 } // namespace fvfsi_test

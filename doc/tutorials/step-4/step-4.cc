@@ -32,7 +32,7 @@
  *   line 12     the residual r = d~ - d (Eq. 30);
  *   lines 13-17 converged: the next time step; else a new d, by fixed relaxation or Aitken's
  *               dynamic relaxation (Eq. 31, both written out here) or by IQN-ILS
- *               (fvfsi::CouplingAcceleration), and the next iteration.
+ *               (the library's fvfsi::CouplingMethod), and the next iteration.
  *
  * The solvers (fvfsi::FluidSolver, fvfsi::SolidSolver, fvfsi::MeshMotion) and the transfer maps
  * are the library's; the loop is this program's. The column's added mass makes plain
@@ -54,7 +54,7 @@
 #include <fvfsi/ale/mesh_motion.h>
 #include <fvfsi/app/parameters.h>
 #include <fvfsi/base/time_control.h>
-#include <fvfsi/coupling/coupling_acceleration.h>
+#include <fvfsi/coupling/coupling_method.h>
 #include <fvfsi/coupling/face_interpolation.h>
 #include <fvfsi/coupling/interface_zone.h>
 #include <fvfsi/coupling/vertex_projection.h>
@@ -240,7 +240,7 @@ private:
   std::unique_ptr<InterfaceZone<dim>> fluid_zone, solid_zone;
   std::unique_ptr<FaceInterpolation<dim>> traction_map;
   std::unique_ptr<VertexProjection<dim>> displacement_map;
-  std::unique_ptr<CouplingAcceleration> iqn_ils;
+  std::unique_ptr<CouplingMethod> iqn_ils;
 
   std::vector<Point<dim>> vertices_old; // fluid vertex positions at t^n
   // The interface displacement at the fluid interface points at t^(n+1), t^n, t^(n-1) [m].
@@ -310,8 +310,8 @@ void PressureColumn::make_interface()
                                          "solid side");
   traction_map = std::make_unique<FaceInterpolation<dim>>(*fluid_zone, *solid_zone);
   displacement_map = std::make_unique<VertexProjection<dim>>(*solid_zone, *fluid_zone);
-  if (c.method == CouplingParameters::Method::iqn_ils)
-    iqn_ils = std::make_unique<CouplingAcceleration>(c);
+  if (c.method == "IQN-ILS")
+    iqn_ils = CouplingMethod::create(c);
   d.reinit(dim * fluid_zone->n_points());
   d_old = d;
   d_older = d;
@@ -524,24 +524,20 @@ InterfaceVector PressureColumn::transfer_displacements() const
 InterfaceVector PressureColumn::next_displacement(const InterfaceVector& d_tilde,
                                                   const InterfaceVector& r, const unsigned int k)
 {
-  switch (coupling.method)
-  {
-    case CouplingParameters::Method::fixed:
-      return fixed_relaxation(r, coupling.relaxation);
-    case CouplingParameters::Method::aitken:
-      return aitken(r, k);
-    case CouplingParameters::Method::iqn_ils:
-      // Interface quasi-Newton with a least-squares inverse Jacobian (Degroote et al., the
-      // paper's ref [5]). The iterations so far give the secants Delta r_i (columns of V) and
-      // Delta d~_i (columns of W). Fit the change of r: c = argmin |r + V c|; the same
-      // combination of the d~ changes is the quasi-Newton step, d <- d~ + W c. Aitken (below)
-      // is this with one column and the inverse Jacobian restricted to a multiple of the
-      // identity. With `Reuse time steps` > 0 the columns of earlier time steps are kept: then
-      // even the first iteration of a step is a quasi-Newton step.
-      return iqn_ils->next(d, d_tilde);
-    default:
-      throw std::logic_error("step-4 writes out fixed relaxation, Aitken and IQN-ILS");
-  }
+  if (coupling.method == "fixed")
+    return fixed_relaxation(r, coupling.relaxation);
+  if (coupling.method == "Aitken")
+    return aitken(r, k);
+  if (coupling.method == "IQN-ILS")
+    // Interface quasi-Newton with a least-squares inverse Jacobian (Degroote et al., the
+    // paper's ref [5]). The iterations so far give the secants Delta r_i (columns of V) and
+    // Delta d~_i (columns of W). Fit the change of r: c = argmin |r + V c|; the same
+    // combination of the d~ changes is the quasi-Newton step, d <- d~ + W c. Aitken (below)
+    // is this with one column and the inverse Jacobian restricted to a multiple of the
+    // identity. With `Reuse time steps` > 0 the columns of earlier time steps are kept: then
+    // even the first iteration of a step is a quasi-Newton step.
+    return iqn_ils->next(d, d_tilde);
+  throw std::logic_error("step-4 writes out fixed relaxation, Aitken and IQN-ILS");
 }
 
 InterfaceVector PressureColumn::fixed_relaxation(const InterfaceVector& r, const double w) const
@@ -639,9 +635,8 @@ struct Row
   Outcome outcome = {};
 };
 
-Row make_row(const std::string& name, const AllParameters& p,
-             const CouplingParameters::Method method, const double omega, const unsigned int reuse,
-             const unsigned int traced_step)
+Row make_row(const std::string& name, const AllParameters& p, const std::string& method,
+             const double omega, const unsigned int reuse, const unsigned int traced_step)
 {
   CouplingParameters c = p.fsi.coupling;
   c.method = method;
@@ -711,7 +706,7 @@ std::string residual_table(const std::vector<Row>& rows)
       const auto& res = row.outcome.traced_residuals;
       if (k >= res.size())
         table += format("%24s", "");
-      else if (row.coupling.method == CouplingParameters::Method::aitken)
+      else if (row.coupling.method == "Aitken")
         table += format("   %8.1e (omega %5.3f)", res[k], row.outcome.traced_omega[k]);
       else
         table += format("%24.1e", res[k]);
@@ -839,7 +834,7 @@ void solve(Row& row, const AllParameters& p)
   Timer timer;
   PressureColumn column(p, row.coupling);
   row.outcome = column.run(row.traced_step);
-  if (row.coupling.method == CouplingParameters::Method::aitken)
+  if (row.coupling.method == "Aitken")
     column.output_results();
   pcout << "  " << row.outcome.total_iterations << " coupling iterations (at most "
         << row.outcome.max_iterations << " per time step), " << timer.wall_time() << " s wall time"
@@ -854,14 +849,13 @@ void run(const std::string& case_file, const std::string& case_name, const unsig
   const double A_euler = added_mass_ratio(p, 1 / dt), A_bdf2 = added_mass_ratio(p, 1.5 / dt);
 
   // The coupling methods; Tolerance, Max iterations and Fixed iterations are those of the file.
-  using Method = CouplingParameters::Method;
   const double omega = p.fsi.coupling.relaxation; // 0.4
-  std::vector<Row> rows = {make_row("Gauss-Seidel", p, Method::fixed, 1.0, 0, 1),
-                           make_row("fixed relaxation", p, Method::fixed, omega, 0, traced),
-                           make_row("Aitken", p, Method::aitken, omega, 0, traced),
-                           make_row("IQN-ILS", p, Method::iqn_ils, omega, 0, traced)};
+  std::vector<Row> rows = {make_row("Gauss-Seidel", p, "fixed", 1.0, 0, 1),
+                           make_row("fixed relaxation", p, "fixed", omega, 0, traced),
+                           make_row("Aitken", p, "Aitken", omega, 0, traced),
+                           make_row("IQN-ILS", p, "IQN-ILS", omega, 0, traced)};
   // IQN-ILS with the columns of the 3 earlier time steps, the setting the file ships.
-  Row reuse = make_row("IQN-ILS, reuse 3 steps", p, Method::iqn_ils, omega, 3, traced);
+  Row reuse = make_row("IQN-ILS, reuse 3 steps", p, "IQN-ILS", omega, 3, traced);
   for (Row* row : {&rows[0], &rows[1], &rows[2], &rows[3], &reuse})
     solve(*row, p);
   Row scene = rows[2];

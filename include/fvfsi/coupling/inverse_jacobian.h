@@ -8,9 +8,9 @@
 //
 //   J = J_prev + (W - J_prev V) V^+,   V^+ = (V^T V)^-1 V^T,
 //
-// the least change of J_prev (in the Frobenius norm) with J V = W. Within a time step,
-// CouplingAcceleration applies this J without forming it: J r = J_prev (r - V c) + W c with
-// c = V^+ r, i.e. the IQN-ILS correction of the step's own columns plus J_prev on the part of r
+// the least change of J_prev (in the Frobenius norm) with J V = W. Within a time step, IQN-IMVJ
+// (source/coupling/methods/iqn_imvj.cc) applies this J without forming it:
+// J r = J_prev (r - V c) + W c with c = V^+ r, i.e. the IQN-ILS correction of the step's own columns plus J_prev on the part of r
 // that they do not explain (fv/least_squares_model.h).
 //
 // Memory. fvfsi's interfaces have N ~ 1e2-1e3 values in 2D and 1e4-1e5 on a 3D tube, so:

@@ -25,9 +25,9 @@
 
 #include <fvfsi/ale/mesh_motion.h>
 #include <fvfsi/base/time_control.h>
-#include <fvfsi/coupling/coupling_acceleration.h>
 #include <fvfsi/coupling/face_interpolation.h>
 #include <fvfsi/coupling/interface_zone.h>
+#include <fvfsi/coupling/partitioned_coupling.h>
 #include <fvfsi/coupling/vertex_projection.h>
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/fv/point_probes.h>
@@ -105,7 +105,7 @@ namespace fvfsi
     const FluidSolver<dim>& fluid_solver() const { return *fluid; }
     const TimeControl& time() const { return clock; }
     /// The interface displacement at the fluid interface vertices (zone numbering) [m].
-    const InterfaceVector& interface_displacement() const { return d; }
+    const InterfaceVector& interface_displacement() const { return coupling->displacement(); }
     /// The displacement at solid probe i [m] (collective).
     dealii::Tensor<1, dim> solid_probe(unsigned int i) const;
     /// Print the probes' displacements, the forces and the coupling iterations of the run.
@@ -154,17 +154,15 @@ namespace fvfsi
     void global_state(Archive& archive);
     /// One time step of Algorithm 1; returns the coupling iterations.
     unsigned int solve_time_step();
-    /// Step 2 of Algorithm 1: coupling iterations from d until the interface residual is below
-    /// the tolerance; returns their number (d is then the accepted displacement).
+    /// Step 2 of Algorithm 1 (PartitionedCoupling::converge with coupling_iteration()):
+    /// coupling iterations from d until the interface residual is below the tolerance; returns
+    /// their number (d is then the accepted displacement).
     unsigned int converge_interface();
     /// Steady FSI (Fluid/Transient = Solid/Transient = false): the coupling iterations converge
     /// the steady coupled state, steady fluid and static solid in each; returns their number.
     unsigned int solve_steady();
     /// "time step N (t = ...)" or "the steady coupled solve", for messages.
     std::string step_name() const;
-    /// What to change when the coupling iterations diverge or stall, for the Coupling/Method
-    /// in use.
-    std::string coupling_advice() const;
     /// Steps 2a-2e of Algorithm 1 for the displacement d; returns the solid's answer d~.
     InterfaceVector coupling_iteration(const InterfaceVector& d);
     /// Move the fluid mesh so that its interface vertices sit at reference + d.
@@ -206,15 +204,14 @@ namespace fvfsi
     std::unique_ptr<InterfaceZone<dim>> fluid_zone, solid_zone;
     std::unique_ptr<FaceInterpolation<dim>> traction_map;
     std::unique_ptr<VertexProjection<dim>> displacement_map;
-    std::unique_ptr<CouplingAcceleration> acceleration;
+    /// Algorithm 1's iteration, the coupling method and the interface displacements.
+    std::unique_ptr<PartitionedCoupling> coupling;
     PointProbes<dim> probes;       ///< Solid scene/Probes: displacement
     PointProbes<dim> fluid_probes; ///< Fluid scene/Probes: velocity and pressure
     std::unique_ptr<VtuOutput<dim>> fluid_output, solid_output;
     std::unique_ptr<HistoryFile> history;
 
     std::vector<dealii::Point<dim>> vertices_old; ///< fluid vertex positions at t^n
-    /// Interface displacement at the fluid interface vertices at t^(n+1), t^n, t^(n-1) [m].
-    InterfaceVector d, d_old, d_older;
     CheckpointParameters checkpoints;
     /// Restarting: the checkpoint's meshes and records between make_grids() and
     /// restore_checkpoint(), and the fluid vertex positions saved.
