@@ -60,7 +60,7 @@ using namespace fvfsi;
 constexpr int dim = 2; // true 2D, plane stress
 
 // @sect3{The Kirsch solution}
-// The infinite plate with a hole (reference/benchmarks.md section 1), in polar coordinates
+// The infinite plate with a hole (doc/reference/benchmarks.md section 1), in polar coordinates
 // (r, t) about the hole centre. Plane stress: kappa = (3 - nu)/(1 + nu), and the 2D lambda is the
 // reduced E nu / (1 - nu^2). Checks: sigma_xx(0, a) = 3 T and u_x(a, 0) = 3 a T / E = 1.5e-3 m.
 namespace Kirsch

@@ -1,7 +1,7 @@
 /* ---------------------------------------------------------------------
  * fvfsi tutorial step-3: incompressible flow past the cylinder by the PISO algorithm.
  *
- * The Turek-Hron channel (reference/benchmarks.md section 2): [0, 2.5] x [0, 0.41] m, the rigid
+ * The Turek-Hron channel (doc/reference/benchmarks.md section 2): [0, 2.5] x [0, 0.41] m, the rigid
  * cylinder of radius 0.05 m at (0.2, 0.2) with the rigid flag behind it (y in [0.19, 0.21], up
  * to x = 0.6), a parabolic inflow of mean velocity U, no slip on the walls, the cylinder and
  * the flag, and p = 0 at the outlet. rho = 1000 kg/m^3, nu = 1e-3 m^2/s. With U = 0.2 m/s the
