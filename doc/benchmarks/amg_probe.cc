@@ -1,6 +1,6 @@
-// The pressure AMG on one and two ranks, outside fvfsi (doc/results/performance.md, section 8:
-// "ML's coarse solve on every rank, and MueLu"). Reads a pressure system dumped by
-// doc/results/pressure_dump_probe.patch (DIR/pressure_A.mtx, pressure_b.txt, pressure_x0.txt),
+// The pressure AMG on one and two ranks, outside fvfsi (doc/results/log.md: "ML's coarse solve on
+// every rank, and MueLu"; the aggregation threshold: doc/results/performance.md, section 8). Reads a pressure system dumped by
+// doc/benchmarks/pressure_dump_probe.patch (DIR/pressure_A.mtx, pressure_b.txt, pressure_x0.txt),
 // splits its rows into one contiguous range per rank (for deal.II's cell numbering on p4est the
 // partition the fluid itself would get), and times CG (Belos) from the dumped start value to a
 // relative residual of 1e-2 (the correctors' tolerance) and 1e-6 (the last solve of a step):

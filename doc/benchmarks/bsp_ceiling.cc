@@ -1,6 +1,6 @@
 // What parallel efficiency the machine itself allows a bulk-synchronous code (not a test: it
-// prints a wall time; doc/results/bsp_ceiling.sh runs it, doc/results/performance.md section 8
-// reads it).
+// prints a wall time; doc/results/bsp_ceiling.sh runs it, doc/results/log.md, "Again on the Intel
+// Xeon, with the machine's own ceiling", reads it).
 //
 //   mpirun -np P bsp_ceiling [--cells 47160] [--sweeps-per-sync 4] [--syncs 40000]
 //
@@ -13,7 +13,7 @@
 // fluctuate independently make every round wait for the slower of the two. On 47 104 cells one
 // sweep takes about 70 us on one rank of the 2-core Intel Xeon test machine (1.458 s for 5 000
 // rounds of 4), so 1-4 sweeps per round bracket the work fvfsi's pressure CG does between two
-// meetings of the ranks (performance.md section 8).
+// meetings of the ranks (log.md, the same entry).
 //
 // Prints one line: ranks, cells, sweeps per sync, syncs, the slowest rank's wall seconds, and a
 // checksum (only so that the compiler keeps the work).

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The parallel efficiency this machine allows a bulk-synchronous code (doc/results/performance.md,
-# section 8): doc/benchmarks/bsp_ceiling.cc, a perfectly parallel stand-in for a linear solve on
+# The parallel efficiency this machine allows a bulk-synchronous code (doc/results/log.md, "Again on
+# the Intel Xeon, with the machine's own ceiling"): doc/benchmarks/bsp_ceiling.cc, a perfectly parallel stand-in for a linear solve on
 # 47 104 cells (no halo, no serial part, the work split exactly in two) whose ranks meet in an
 # MPI_Allreduce after every 1, 4 or 16 five-point sweeps (about 70, 280, 1100 us of work on one
 # rank). Runs one and two ranks REPEATS times each, alternating, and prints the wall times, their

@@ -30,7 +30,8 @@ perf_each_rank() {
 # fvfsi that run the first steps of prm/turek_hron_fsi3.prm as shipped (fluid n = 60: 47 160
 # cells, flag 123 x 6: 738 cells, dt = 0.75 ms): the fluid alone for 10 steps (Coupling/Start
 # time = 0.0075 s), then coupled up to END_TIME (0.03: 40 steps; 0.0825: 110), no field output,
-# the results into OUTPUT_DIRECTORY. The probes of performance.md section 8 all run this case.
+# the results into OUTPUT_DIRECTORY. The two-rank probes of log.md (once performance.md section 8)
+# all ran this case.
 fsi3_first_steps() {
   fsi3_case=(prm/turek_hron_fsi3.prm --set "Coupling/Start time=0.0075" --set "Time/End time=$1"
              --set "Fluid scene/Output interval=0" --set "Output directory=$2")

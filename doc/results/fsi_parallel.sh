@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Parallel efficiency of the shipped FSI3 case (doc/results/performance.md, section 8): the first
+# Parallel efficiency of the shipped FSI3 case (doc/results/log.md; its result: performance.md,
+# section 8): the first
 # 110 time steps of prm/turek_hron_fsi3.prm (fluid n = 60: 47 160 cells, flag 123 x 6: 738 cells,
 # dt = 0.75 ms), the coupling from step 11 on (Coupling/Start time = 0.0075), on 1 and 2 MPI ranks
 # (fluid and solid each decomposed by p4est on its own), REPEATS runs each, alternating. Prints
@@ -9,7 +10,7 @@
 # a completed run in RUN_DIRECTORY is not run again. Arguments after REPEATS go to every run (e.g.
 # --set "Solid/Algorithm=coupled").
 #
-# The two cores of a VM need not run at the same speed: on the AMD EPYC VM of performance.md one
+# The two cores of a VM need not run at the same speed: on the AMD EPYC VM of log.md one
 # of them ran the same one-rank work 19% slower than the other for minutes on end, then 2-5%. A
 # two-rank run waits for its slower rank at every meeting, so each round also runs the one-rank
 # case on the second core (`taskset -c 1`; `mpirun -np 1` binds to the first, as mpirun -np 2
@@ -17,7 +18,8 @@
 # one-rank runs (the best serial time), E = T1 / (2 T2), the ceiling C = T1 / (the slower one):
 # what a perfectly balanced code without communication would reach on the two cores as they ran
 # then, and E / C. The one-rank runs on the two cores follow each other, so C also holds the
-# drift between runs two minutes apart; two_copies.sh runs the two cores at the same moment.
+# drift between runs two minutes apart; two_copies.sh (removed from the tree in the commit after
+# 8f61d2a; `git show 8f61d2a:doc/results/two_copies.sh` restores it) ran the two cores at the same moment.
 #   usage: doc/results/fsi_parallel.sh [path/to/fvfsi [RUN_DIRECTORY [REPEATS [--set KEY=VALUE ...]]]]
 set -euo pipefail
 cd "$(dirname "$0")/../.."

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Two builds of fvfsi side by side on one and two ranks (doc/results/performance.md, section 8,
-# "Where the two ranks met and waited"): the first 40 steps of prm/turek_hron_fsi3.prm (10 steps
+# Two builds of fvfsi side by side on one and two ranks (doc/results/log.md, "Where the two ranks
+# met and waited"): the first 40 steps of prm/turek_hron_fsi3.prm (10 steps
 # of the fluid alone, 30 coupled), REPEATS rounds, each round running build A on 1 and 2 ranks,
 # then build B on 1 and 2 ranks. Prints per build the coupled-step seconds of every run, the
 # efficiency T1 / (2 T2) from the medians and the median of the pairs of one round, and the

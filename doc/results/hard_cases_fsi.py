@@ -77,6 +77,19 @@ def history(path):
         return [dict(zip(names, map(float, line.split()))) for line in f if line.strip()]
 
 
+def run_fvfsi(fvfsi, prm, settings, out):
+    """fvfsi PRM --set S ... (output in OUT): the process, its wall time [s], the history rows and
+    the coupled ones among them."""
+    args = [fvfsi, os.path.join(ROOT, "prm", prm)]
+    for s in settings:
+        args += ["--set", s]
+    start = time.time()
+    p = subprocess.run(args, capture_output=True, text=True)
+    wall = time.time() - start
+    rows = history(os.path.join(out, "fsi_history.txt"))
+    return p, wall, rows, [r for r in rows if r["coupling_iterations"] > 0]
+
+
 def run(row, method, tolerance):
     name = "%s_%s_%g" % (row.replace("/", "_"), method, tolerance)
     out = os.path.join(WORK, name)
@@ -92,14 +105,7 @@ def run(row, method, tolerance):
                 "Output directory=" + out] + ROWS[row]
     if tolerance < 1e-6:
         settings += converged_solves("1e-10", "1e-13")
-    args = [FVFSI, os.path.join(ROOT, "prm", "turek_hron_fsi3.prm")]
-    for s in settings:
-        args += ["--set", s]
-    start = time.time()
-    p = subprocess.run(args, capture_output=True, text=True)
-    wall = time.time() - start
-    rows = history(os.path.join(out, "fsi_history.txt"))
-    coupled = [r for r in rows if r["coupling_iterations"] > 0]
+    p, wall, rows, coupled = run_fvfsi(FVFSI, "turek_hron_fsi3.prm", settings, out)
     end = float(os.environ.get("END", "2"))
     reached = bool(rows) and rows[-1]["t"] >= end - 1e-9
     message = (p.stderr.strip().splitlines() or ["(no message)"])[-1] if p.returncode else ""

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Was one core slower than the other during a two-rank run? (doc/results/performance.md, section 8.)
+# Was one core slower than the other during a two-rank run? (doc/results/log.md, "An eleventh pass,
+# and what each core did in the disturbed runs".)
 # The first 40 steps of prm/turek_hron_fsi3.prm (10 fluid alone, 30 coupled) on two ranks, each
 # under `perf record` (flat, 999 samples per second of its core's time), ROUNDS times. Both ranks
 # hold the same number of fluid cells (p4est's even split), so the loops that touch only a rank's
