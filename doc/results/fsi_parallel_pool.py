@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The two-rank sets of doc/results/fsi_parallel.json pooled (log.md, "The whole shipped run on two
 ranks, and a sixth set"): every round of the sets run beside two pinned one-rank copies
-(two_copies.sh, removed from the tree in the commit after 8f61d2a; `git show
+(two_copies.sh, removed from the tree in commit 1cbcd40; `git show
 8f61d2a:doc/results/two_copies.sh` restores it: T1, T2, Tc0, Tc1), per
 case (110 or 40 time steps): E = T1 / (2 T2), C = T1 / max(Tc0, Tc1), E / C, and the fastest
 one-rank run over twice the fastest two-rank run.

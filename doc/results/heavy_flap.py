@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The heavy flap of doc/results/heavy_flap.md: its period and amplitude on a series of fluid
+"""The heavy flap of doc/results/hard_cases.md (section 8): its period and amplitude on a series of fluid
 meshes against its in-vacuo period, from the runs of heavy_flap.sh.
 
 Each tip history u_x(t) is fitted over 0.2 s <= t <= 1 s (after the start-up) by

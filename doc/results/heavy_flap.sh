@@ -1,5 +1,5 @@
 #!/bin/bash
-# The heavy flap of doc/results/heavy_flap.md: prm/wall_plate_flap_vacuo.prm (the solid alone)
+# The heavy flap of doc/results/hard_cases.md (section 8): prm/wall_plate_flap_vacuo.prm (the solid alone)
 # and prm/wall_plate_flap.prm (the flap in the flow) on the fluid meshes r = 1, 2, 3 of the
 # hard-case blocks, with the ramped inflow as shipped and with an impulsive start, and the ramped
 # series again at rho_s / rho_f = 10 000 (rho_s = 1e4 kg/m^3, E = 1e9 Pa: the same in-vacuo
