@@ -19,7 +19,11 @@ the run with the smallest fixed step (the case's reference).
 usage (from the project root, after building):
   python3 doc/results/adaptive_fsi.py [fsi3|fsi2] FVFSI [WORK]
 Environment: RUNS (names of the case's runs below, default all). Appends to the case's jsonl in
-doc/results; `python3 doc/results/adaptive_fsi.py table [fsi3|fsi2]` prints its table.
+doc/results; `python3 doc/results/adaptive_fsi.py table [fsi3|fsi2]` prints its table, and
+`python3 doc/results/adaptive_fsi.py remeasure fsi2 WORK` measures the runs again from their
+histories in WORK. Means are taken in time (trapezoidal rule); the FSI3 data of
+adaptive_fsi.jsonl was measured with plain averages of the samples (its histories are gone), which
+biases the adaptive runs' drag mean.
 """
 import json
 import os
@@ -59,10 +63,17 @@ FSI2 = dict(study("turek_hron_fsi2.prm", 15, (12.0, 15.0), 0.0015, [0.003, 0.001
 CASES = {"fsi3": FSI3, "fsi2": FSI2}
 
 
+def time_mean(w, key):
+    """The mean of a column over the window in time (trapezoidal rule): with adaptive steps the
+    samples crowd where the flow changes fast, and their plain average is biased."""
+    area = sum((b["t"] - a["t"]) * (a[key] + b[key]) / 2 for a, b in zip(w, w[1:]))
+    return area / (w[-1]["t"] - w[0]["t"])
+
+
 def measure(rows, window):
     w = [r for r in rows if window[0] <= r["t"] <= window[1] + 1e-9]
     u = [r["uy_A"] for r in w]
-    mean = sum(u) / len(u)
+    mean = time_mean(w, "uy_A")
     up = []
     for a, b in zip(w, w[1:]):
         ua, ub = a["uy_A"] - mean, b["uy_A"] - mean
@@ -71,7 +82,7 @@ def measure(rows, window):
     drag = [r["drag"] for r in w]
     return {"uy_A_amplitude": (max(u) - min(u)) / 2,
             "frequency": (len(up) - 1) / (up[-1] - up[0]) if len(up) > 1 else None,
-            "drag_mean": sum(drag) / len(drag), "drag_amplitude": (max(drag) - min(drag)) / 2,
+            "drag_mean": time_mean(w, "drag"), "drag_amplitude": (max(drag) - min(drag)) / 2,
             "dt_window_mean": (w[-1]["t"] - w[0]["t"]) / (len(w) - 1),
             "courant_window_max": max(r["courant"] for r in w)}
 
@@ -119,9 +130,27 @@ def table(case_name):
             r["frequency"], e("frequency"), e("drag_mean"), e("drag_amplitude"), r["wall_s"]))
 
 
+def remeasure(case_name, work):
+    """Measure the runs of the case's jsonl again from their histories in WORK (after a change of
+    measure()), keeping each run's cost."""
+    case = CASES[case_name]
+    path = os.path.join(HERE, case["jsonl"])
+    with open(path) as f:
+        results = [json.loads(line) for line in f if line.strip()]
+    for result in results:
+        rows = history(os.path.join(work, result["name"], "fsi_history.txt"))
+        if result["returncode"] == 0 and rows:
+            result.update(measure(rows, case["window"]))
+    with open(path, "w") as f:
+        f.writelines(json.dumps(r) + "\n" for r in results)
+
+
 def main():
     if sys.argv[1] == "table":
         table(sys.argv[2] if len(sys.argv) > 2 else "fsi3")
+        return
+    if sys.argv[1] == "remeasure":  # remeasure CASE WORK
+        remeasure(sys.argv[2], sys.argv[3])
         return
     case_name = sys.argv[1] if sys.argv[1] in CASES else "fsi3"
     args = sys.argv[2:] if sys.argv[1] in CASES else sys.argv[1:]
