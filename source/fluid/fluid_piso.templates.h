@@ -135,7 +135,7 @@ namespace fvfsi
       if (prm.convection == FluidParameters::Convection::linear_upwind)
         correction = to_face * grad_u[j][U];
       else // central
-        correction = face.w * u[face.P][j] + (1 - face.w) * u[face.N][j] - u[U][j];
+        correction = face.interpolate(u[face.P][j], u[face.N][j]) - u[U][j];
       B_rest[j].local_element(face.P) -= phi * correction;
       if (face.kind == FaceKind::interior)
         B_rest[j].local_element(face.N) += phi * correction;
@@ -191,7 +191,7 @@ namespace fvfsi
       const double inverse_a_star =
         face.N == invalid_cell
           ? 1 / a_star.local_element(face.P)
-          : face.w / a_star.local_element(face.P) + (1 - face.w) / a_star.local_element(face.N);
+          : face.interpolate_reciprocal(a_star.local_element(face.P), a_star.local_element(face.N));
       a_star_f[f] = 1 / inverse_a_star;
       const auto r = volume_ratios(f);
       const double alpha = prm.transient ? outer_alpha : relaxation;
@@ -200,9 +200,10 @@ namespace fvfsi
       gamma_p[f] = 1 / (c0_face[f] + a_star_f[f]);
       gamma_c[f] = gamma_p[f];
       if (simplec()) // 1 / (a - H1)_f, interpolated as a*_f
-        gamma_c[f] = face.N == invalid_cell ? 1 / a_tilde.local_element(face.P)
-                                            : face.w / a_tilde.local_element(face.P) +
-                                                (1 - face.w) / a_tilde.local_element(face.N);
+        gamma_c[f] = face.N == invalid_cell
+                       ? 1 / a_tilde.local_element(face.P)
+                       : face.interpolate_reciprocal(a_tilde.local_element(face.P),
+                                                     a_tilde.local_element(face.N));
       const double coefficient = gamma_c[f] * face.area / face.d_n;
       if (face.N == invalid_cell)
         pressure_equation.diagonal[face.P] += coefficient; // Dirichlet (outlet), Eq. 23
@@ -278,18 +279,18 @@ namespace fvfsi
       {
         h_by_a =
           face.w * h[P] / a_star.local_element(P) + (1 - face.w) * h[N] / a_star.local_element(N);
-        m = face.centre - (face.w * geometry.centroid[P] + (1 - face.w) * geometry.centroid[N]);
+        m = face.centre - face.interpolate(geometry.centroid[P], geometry.centroid[N]);
         for (unsigned int j = 0; j < dim; ++j)
-          grad[j] = face.w * grad_u[j][P] + (1 - face.w) * grad_u[j][N];
+          grad[j] = face.interpolate(grad_u[j][P], grad_u[j][N]);
       }
       for (unsigned int j = 0; j < dim; ++j)
         h_by_a[j] += m * grad[j]; // skewness correction
       // Old fluxes carried to the new face: F^o + u^o_f . (S_f - S_f^o) (exactly F^o on a fixed
       // mesh), weighted by the volume ratios r1_f, r2_f.
       const Tensor<1, dim> u_o =
-        N == invalid_cell ? u_old[P] : face.w * u_old[P] + (1 - face.w) * u_old[N];
+        N == invalid_cell ? u_old[P] : face.interpolate(u_old[P], u_old[N]);
       const Tensor<1, dim> u_oo =
-        N == invalid_cell ? u_old2[P] : face.w * u_old2[P] + (1 - face.w) * u_old2[N];
+        N == invalid_cell ? u_old2[P] : face.interpolate(u_old2[P], u_old2[N]);
       const double F_o = F_old[f] + u_o * (face.S - S_old[f]);
       const double F_oo = F_old2[f] + u_oo * (face.S - S_old2[f]);
       const auto r = volume_ratios(f);

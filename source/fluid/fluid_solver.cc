@@ -145,7 +145,7 @@ namespace fvfsi
       if (face.N == invalid_cell)
         F[f] = face.S * boundary_u[f];
       else
-        F[f] = face.S * (face.w * u[face.P] + (1 - face.w) * u[face.N]);
+        F[f] = face.S * face.interpolate(u[face.P], u[face.N]);
     }
     F_old = F;
     F_old2 = F;
@@ -301,7 +301,7 @@ namespace fvfsi
       {
         const auto r_N = ratios(face.N);
         face_volume_ratio[f] = {
-          {face.w * r_P[0] + (1 - face.w) * r_N[0], face.w * r_P[1] + (1 - face.w) * r_N[1]}};
+          {face.interpolate(r_P[0], r_N[0]), face.interpolate(r_P[1], r_N[1])}};
       }
     }
   }

@@ -74,10 +74,10 @@ namespace fvfsi
         const auto& face = geometry.faces[f];
         if (face.kind == FaceKind::ghost_boundary)
           continue;
-        const double phi_f = face.N == invalid_cell
-                               ? boundary_values[f]
-                               : face.w * phi.local_element(face.P) +
-                                   (1 - face.w) * phi.local_element(face.N) + correction(f);
+        const double phi_f = face.N == invalid_cell ? boundary_values[f]
+                                                    : face.interpolate(phi.local_element(face.P),
+                                                                       phi.local_element(face.N)) +
+                                                        correction(f);
         sum[face.P] += phi_f * face.S;
         if (face.kind == FaceKind::interior)
           sum[face.N] -= phi_f * face.S;
@@ -105,9 +105,9 @@ namespace fvfsi
       [&](const unsigned int f)
       {
         const auto& face = geometry.faces[f];
-        const Point<dim> r_f_prime(face.w * geometry.centroid[face.P] +
-                                   (1 - face.w) * geometry.centroid[face.N]);
-        return (face.centre - r_f_prime) * (face.w * plain[face.P] + (1 - face.w) * plain[face.N]);
+        const Point<dim> r_f_prime =
+          face.interpolate(geometry.centroid[face.P], geometry.centroid[face.N]);
+        return (face.centre - r_f_prime) * face.interpolate(plain[face.P], plain[face.N]);
       },
       gradient);
   }

@@ -94,7 +94,7 @@ namespace fvfsi
     const double dphi_N = -(face.k_N * grad[face.N]) + 0.5 * (face.k_N * (H_N * face.k_N));
     const double d_Pn = face.n * (face.centre - geometry.centroid[face.P]);
     const double d_Nn = face.d_n - d_Pn;
-    const SymmetricTensor<2, dim> H_f = face.w * H_P + (1 - face.w) * H_N;
+    const SymmetricTensor<2, dim> H_f = face.interpolate(H_P, H_N);
     return dphi_N - dphi_P - 0.5 * face.d_n * (d_Nn - d_Pn) * (face.n * (H_f * face.n));
   }
 

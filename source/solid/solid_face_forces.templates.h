@@ -44,8 +44,7 @@ namespace fvfsi
     }
     // Demirdzic-Muzaferija and Jasak-Weller: the interpolated cell gradient (the cell's own at a
     // boundary), with its normal part replaced by g_n.
-    const Tensor<2, dim> G_bar =
-      boundary ? G_P : face.w * G_P + (1 - face.w) * cell_gradient(face.N);
+    const Tensor<2, dim> G_bar = boundary ? G_P : face.interpolate(G_P, cell_gradient(face.N));
     return G_bar + outer_product(face.n, g_n - face.n * G_bar);
   }
 
@@ -155,8 +154,7 @@ namespace fvfsi
       // Jasak-Weller: K n.grad u_f (Eq. 19 with interpolated gradients) + n.q of the
       // interpolated cell gradient, as solidDisplacementFoam's laplacian + div(sigmaExp).
       const Tensor<2, dim> G_f = face_gradient(f);
-      const Tensor<2, dim> G_bar =
-        face.w * cell_gradient(face.P) + (1 - face.w) * cell_gradient(face.N);
+      const Tensor<2, dim> G_bar = face.interpolate(cell_gradient(face.P), cell_gradient(face.N));
       return lame.K() * (face.n * G_f) + first_piola_traction(G_bar, face.n, lame) -
              lame.K() * (face.n * G_bar);
     }

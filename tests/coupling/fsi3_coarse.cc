@@ -81,17 +81,10 @@ int main(int argc, char** argv)
   const MPI_Comm comm = MPI_COMM_WORLD;
   const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
 
-  const std::string error = run({}, comm, "out_shipped");
+  const std::string error = run_shipped_and_one_rank<2>("turek_hron_fsi3", coarse, tight, comm);
   const std::string impulsive =
     run({"Coupling/Start time=0", "Time/End time=0.004"}, comm, "out_impulsive");
-  run(tight, comm, "out_np");
   const bool parallel = dealii::Utilities::MPI::n_mpi_processes(comm) > 1;
-  if (root)
-  {
-    run(tight, MPI_COMM_SELF, "out_1");
-    if (parallel)
-      run({}, MPI_COMM_SELF, "out_shipped_1");
-  }
   if (!root)
     return 0;
   std::printf("impulsive start: %s\n", impulsive.c_str());

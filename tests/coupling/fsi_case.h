@@ -37,6 +37,26 @@ namespace fvfsi_test
     return "";
   }
 
+  /// The runs of a test that compares partitions: prm/NAME.prm with `base` on `comm` as shipped
+  /// (into out_shipped; its error message is returned) and with `tight` (out_np); on rank 0, with
+  /// `tight` on one rank (out_1) and, if `comm` has several ranks, as shipped on one rank
+  /// (out_shipped_1).
+  template <int dim>
+  std::string run_shipped_and_one_rank(const std::string& name,
+                                       const std::vector<std::string>& base,
+                                       const std::vector<std::string>& tight, MPI_Comm comm)
+  {
+    const std::string error = run_fsi_case<dim>(name, base, {}, comm, "out_shipped");
+    run_fsi_case<dim>(name, base, tight, comm, "out_np");
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+    {
+      run_fsi_case<dim>(name, base, tight, MPI_COMM_SELF, "out_1");
+      if (dealii::Utilities::MPI::n_mpi_processes(comm) > 1)
+        run_fsi_case<dim>(name, base, {}, MPI_COMM_SELF, "out_shipped_1");
+    }
+    return error;
+  }
+
   /// The overrides that converge every solve of a transient FSI run far below what a comparison
   /// of partitions asks: each linear solve, the pressure's first correctors too, by the relative
   /// `reduction`, the solid's outer iterations to 1e-13, the coupling to `coupling_tolerance`.

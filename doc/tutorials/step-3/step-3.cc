@@ -535,14 +535,14 @@ void CylinderFlow::assemble_pressure_equation()
     const double inverse_a_star =
       face.N == invalid_cell
         ? 1 / a_star.local_element(face.P)
-        : face.w / a_star.local_element(face.P) + (1 - face.w) / a_star.local_element(face.N);
+        : face.interpolate_reciprocal(a_star.local_element(face.P), a_star.local_element(face.N));
     a_star_f[f] = 1 / inverse_a_star;
     c0_face[f] = dt > 0 ? c0 : a_star_f[f] * (1 - alpha) / alpha;
     gamma_p[f] = 1 / (c0_face[f] + a_star_f[f]);
     if (!consistent) // classic: Gamma_f = (1 / a)_f, a = c0 + a*
-      gamma_p[f] = face.N == invalid_cell
-                     ? 1 / a.local_element(face.P)
-                     : face.w / a.local_element(face.P) + (1 - face.w) / a.local_element(face.N);
+      gamma_p[f] = face.N == invalid_cell ? 1 / a.local_element(face.P)
+                                          : face.interpolate_reciprocal(a.local_element(face.P),
+                                                                        a.local_element(face.N));
     const double coefficient = gamma_p[f] * face.area / face.d_n;
     if (face.N == invalid_cell)
       pressure_equation->diagonal[face.P] += coefficient;
@@ -592,14 +592,13 @@ void CylinderFlow::compute_predicted_fluxes()
           value[j] += c0_cell_ghosted.local_element(c) * u_old.components[j].local_element(c);
         return value / a.local_element(c);
       };
-      h_by_a = N == invalid_cell ? h_by_a_cell(P)
-                                 : face.w * h_by_a_cell(P) + (1 - face.w) * h_by_a_cell(N);
-      m = face.centre - (N == invalid_cell
-                           ? fv->centroid[P]
-                           : face.w * fv->centroid[P] + (1 - face.w) * fv->centroid[N]);
+      h_by_a =
+        N == invalid_cell ? h_by_a_cell(P) : face.interpolate(h_by_a_cell(P), h_by_a_cell(N));
+      m = face.centre - (N == invalid_cell ? fv->centroid[P]
+                                           : face.interpolate(fv->centroid[P], fv->centroid[N]));
       for (unsigned int j = 0; j < dim; ++j)
-        h_by_a[j] += m * (N == invalid_cell ? grad_u[j][P]
-                                            : face.w * grad_u[j][P] + (1 - face.w) * grad_u[j][N]);
+        h_by_a[j] +=
+          m * (N == invalid_cell ? grad_u[j][P] : face.interpolate(grad_u[j][P], grad_u[j][N]));
       F_star[f] = face.S * h_by_a;
       continue;
     }
@@ -614,9 +613,9 @@ void CylinderFlow::compute_predicted_fluxes()
     {
       h_by_a =
         face.w * h[P] / a_star.local_element(P) + (1 - face.w) * h[N] / a_star.local_element(N);
-      m = face.centre - (face.w * fv->centroid[P] + (1 - face.w) * fv->centroid[N]);
+      m = face.centre - face.interpolate(fv->centroid[P], fv->centroid[N]);
       for (unsigned int j = 0; j < dim; ++j)
-        grad[j] = face.w * grad_u[j][P] + (1 - face.w) * grad_u[j][N];
+        grad[j] = face.interpolate(grad_u[j][P], grad_u[j][N]);
     }
     for (unsigned int j = 0; j < dim; ++j)
       h_by_a[j] += m * grad[j];

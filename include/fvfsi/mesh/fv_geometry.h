@@ -72,6 +72,20 @@ namespace fvfsi
     dealii::Tensor<1, dim> k_N; ///< k_N = (I - n n) . (r_N - r_f)  (Eq. 22), zero at a boundary
     double w = 1;               ///< phi_f = w phi_P + (1 - w) phi_N (linear interpolation)
 
+    /// phi_f = w phi_P + (1 - w) phi_N: a cell quantity (a number, vector, tensor or point)
+    /// interpolated linearly to the face centre. Every face interpolation of the solvers is this.
+    template <typename T>
+    T interpolate(const T& at_P, const T& at_N) const
+    {
+      return w * at_P + (1 - w) * at_N;
+    }
+    /// (1/a)_f = w / a_P + (1 - w) / a_N: the interpolated reciprocal of a cell coefficient (the
+    /// 1/a of the Rhie-Chow face flux).
+    double interpolate_reciprocal(const double a_P, const double a_N) const
+    {
+      return w / a_P + (1 - w) / a_N;
+    }
+
     /// Triangulation vertex indices, in cyclic order counter-clockwise about n_f.
     std::array<unsigned int, max_vertices> vertices;
     /// Weights of the vertex values in the Gauss-Green surface sum of Eq. 37:
