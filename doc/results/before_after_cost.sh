@@ -52,6 +52,9 @@ def forces(d):
 print("%s: before %s s (median %.2f), after %s s (median %.2f), after / before %.3f" %
       (name, " ".join("%.2f" % x for x in b), st.median(b), " ".join("%.2f" % x for x in a),
        st.median(a), st.median(a) / st.median(b)))
+pairs = [y / x for x, y in zip(b, a)]
+print("  after / before pair by pair: %s, median %.3f" % (" ".join("%.3f" % r for r in pairs),
+                                                        st.median(pairs)))
 print("  before: %s\n  after:  %s" % (forces(sys.argv[4]), forces(sys.argv[5])))
 EOP
 done
