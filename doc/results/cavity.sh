@@ -20,10 +20,7 @@ set -euo pipefail
 python=${PYTHON:-/usr/bin/python3} # Debian's, with python3-numpy and python3-matplotlib
 cd "$(dirname "$0")/../.."
 source doc/results/common.sh
-fvfsi=${1:-build/fvfsi}
-runs=${2:-build/cavity_runs}
-mkdir -p "$runs"
-machine_line "commit $(git rev-parse --short HEAD)"
+study_arguments build/cavity_runs "$@"
 # chain PREFIX [SET...]: the four meshes, each from the state of the one before, with the extra
 # --set overrides SET (and the plate graded with exponent $plate_grading if set); their records
 # in $records.

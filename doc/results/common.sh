@@ -8,6 +8,26 @@ machine_line() {
     "load: $(cut -d' ' -f1-3 /proc/loadavg); $(date -u +%FT%TZ)${1:+; $1}"
 }
 
+# study_arguments DEFAULT_RUN_DIRECTORY [FVFSI [RUN_DIRECTORY]]: the two arguments every study
+# script takes, with their defaults: sets fvfsi (build/fvfsi) and runs (DEFAULT_RUN_DIRECTORY),
+# makes the run directory and prints the machine line with the commit.
+study_arguments() {
+  fvfsi=${2:-build/fvfsi}
+  runs=${3:-$1}
+  mkdir -p "$runs"
+  machine_line "commit $(git rev-parse --short HEAD)"
+}
+
+# table_study: for a script that prints a markdown table and plots it (table_plot.py): sets repo
+# (the project root) and out (a new temporary directory), and defines emit LINE, which prints a
+# table line and keeps it in $out/table.md for the plot.
+table_study() {
+  repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+  out=$(mktemp -d)
+  table="$out/table.md"
+  emit() { echo "$1" | tee -a "$table"; }
+}
+
 # completed RUN_DIRECTORY: true if a run wrote RUN_DIRECTORY/summary.json with status "completed"
 # (a failed run writes "failed"), so that a study resumes where it stopped.
 completed() {

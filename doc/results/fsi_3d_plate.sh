@@ -15,11 +15,8 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 source doc/results/common.sh
 python=${PYTHON:-/usr/bin/python3}
-fvfsi=${1:-build/fvfsi}
-runs=${2:-build/fsi_3d_plate_runs}
-mkdir -p "$runs"
+study_arguments build/fsi_3d_plate_runs "$@"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-machine_line "commit $(git rev-parse --short HEAD)"
 
 # run NAME NP PRM [SET...]: PRM on NP ranks with the --set overrides into $runs/NAME, then its
 # record $runs/NAME.json.

@@ -9,10 +9,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source doc/results/common.sh
-fvfsi=${1:-build/fvfsi}
-runs=${2:-build/fsi_3d_stability_runs}
-mkdir -p "$runs"
-machine_line "commit $(git rev-parse --short HEAD)"
+study_arguments build/fsi_3d_stability_runs "$@"
 coarse=("Mesh/Global refinements=1" "Solid mesh/Global refinements=1")
 vertex=("Coupling/Face average displacement=false")
 

@@ -8,10 +8,8 @@
 # Usage: doc/results/mesh_motion.sh BUILD_DIR   (BUILD_DIR holds a Release fvfsi)
 set -uo pipefail
 build=${1:?usage: mesh_motion.sh BUILD_DIR}
-repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-out=$(mktemp -d)
-table="$out/table.md"
-emit() { echo "$1" | tee -a "$table"; } # a table line, also kept for the plot
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+table_study # repo, out, emit
 echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "commit: $(git -C "$repo" rev-parse --short HEAD)"
 echo

@@ -11,10 +11,8 @@
 # Run time on this 2-core machine: about 1 minute CPU, 2 minutes wall under load (the 262,144-cell 3D runs are most of it).
 set -uo pipefail
 build=${1:?usage: poisson_face_gradient.sh BUILD_DIR}
-repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-out=$(mktemp -d)
-table="$out/table.md"
-emit() { echo "$1" | tee -a "$table"; } # a table line, also kept for the plot
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+table_study # repo, out, emit
 echo "commit: $(git -C "$repo" rev-parse --short HEAD)"
 echo
 emit "| dim | face gradient | cells | max cell error | order | max face-gradient error | order | L2 face-gradient error | order | max Dirichlet-face gradient error | order | correction iterations | wall [s] |"

@@ -11,10 +11,7 @@
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 source doc/results/common.sh
-fvfsi=${1:-build/fvfsi}
-runs=${2:-build/steady_range}
-mkdir -p "$runs"
-machine_line "commit $(git rev-parse --short HEAD)"
+study_arguments build/steady_range "$@"
 echo
 echo "| mesh | Re | cells | pseudo steps | alpha at the end | drag [N/m] | wall [s] | stopped with |"
 echo "|---|---|---|---|---|---|---|---|"
