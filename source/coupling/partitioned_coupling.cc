@@ -23,9 +23,10 @@ namespace fvfsi
     d = d_old;
     if (clock.step() > 2)
     {
-      // d^n + omega (d^n - d^(n-1)), omega = dt / dt_old: 2 d^n - d^(n-1) for equal steps.
-      const double omega = clock.time_step() / clock.previous_time_step();
-      d.sadd(1 + omega, -omega, d_older);
+      // d^n + omega (d^n - d^(n-1)), omega = dt / dt_old: 2 d^n - d^(n-1) for equal steps; the
+      // clock's weights, which the fluid's extrapolated state and the error estimate use too.
+      const auto [w_n, w_n_minus_1] = clock.extrapolation_weights();
+      d.sadd(w_n, w_n_minus_1, d_older);
     }
   }
 
