@@ -1,25 +1,15 @@
 #include <fvfsi/coupling/coupling_method.h>
 
 #include <algorithm>
-#include <map>
 #include <stdexcept>
 
 namespace fvfsi
 {
-  namespace
+  std::map<std::string, CouplingMethod::Factory>& CouplingMethod::registry()
   {
-    // The methods there are, by name. A function's static: filled by the methods' Registration
-    // objects while the library loads, whatever the order of its files.
-    std::map<std::string,
-             std::function<std::unique_ptr<CouplingMethod>(const CouplingParameters&)>>&
-    registry()
-    {
-      static std::map<std::string,
-                      std::function<std::unique_ptr<CouplingMethod>(const CouplingParameters&)>>
-        methods;
-      return methods;
-    }
-  } // namespace
+    static std::map<std::string, Factory> methods;
+    return methods;
+  }
 
   void CouplingMethod::add(const std::string& name, Factory factory)
   {

@@ -23,7 +23,9 @@
 //   class MyMethod : public CouplingMethod { ... InterfaceVector update(...) override; ... };
 //   const CouplingMethod::Registration<MyMethod> registration("My method");
 //
-// A new method is that one file (CMake compiles every file of source/).
+// A new method is that one file (CMake compiles every file of source/ into the shared library
+// fvfsi_lib, whose static Registration objects run when it loads; a static library would drop
+// the methods no other file refers to).
 //
 // Convergence (converged()): |r| <= Tolerance |d~| (Eq. 30) or, if `Residual reduction` > 0,
 // |r| <= Residual reduction x the largest |r| of the step's iterations (Lindner et al.: 1e-6);
@@ -37,6 +39,7 @@
 #include <fvfsi/io/checkpoint.h>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -102,6 +105,9 @@ namespace fvfsi
   private:
     using Factory = std::function<std::unique_ptr<CouplingMethod>(const CouplingParameters&)>;
     static void add(const std::string& name, Factory factory);
+    /// The methods there are, by name, filled by the Registration objects while the library
+    /// loads (a function's static, so whatever the order of its files).
+    static std::map<std::string, Factory>& registry();
     double last_relative_residual = 0, last_residual = 0, largest_residual = 0;
   };
 } // namespace fvfsi

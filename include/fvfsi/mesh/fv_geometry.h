@@ -73,7 +73,7 @@ namespace fvfsi
     double w = 1;               ///< phi_f = w phi_P + (1 - w) phi_N (linear interpolation)
 
     /// phi_f = w phi_P + (1 - w) phi_N: a cell quantity (a number, vector, tensor or point)
-    /// interpolated linearly to the face centre. Every face interpolation of the solvers is this.
+    /// interpolated linearly to the face centre, as the solvers interpolate to faces.
     template <typename T>
     T interpolate(const T& at_P, const T& at_N) const
     {
