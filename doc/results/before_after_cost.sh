@@ -9,11 +9,13 @@
 # Prints the machine, each run's wall seconds, the medians and AFTER / BEFORE, and checks that the
 # two give the same results (drag and lift in summary.json, printed with 10 digits).
 #
-#   usage (from the project root): doc/results/before_after_cost.sh BEFORE AFTER [ROUNDS=3]
+#   usage (from the project root): [CASES="pimple fsi3"] [WORK=DIR] \
+#     doc/results/before_after_cost.sh BEFORE AFTER [ROUNDS=3]
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 BEFORE=$(realpath "$1"); AFTER=$(realpath "$2"); ROUNDS=${3:-3}
 WORK=${WORK:-$(mktemp -d)}
+mkdir -p "$WORK"
 machine_line "before $BEFORE, after $AFTER"
 
 cfd3_case=(prm/turek_hron_cfd3.prm --set "Mesh/Generator arguments=40" --set "Time/End time=0.1"
@@ -36,7 +38,7 @@ run() {
   echo "$end - $start" | bc
 }
 
-for case_name in pimple fsi3; do
+for case_name in ${CASES:-pimple fsi3}; do
   before=(); after=()
   for r in $(seq "$ROUNDS"); do
     before+=("$(run "$BEFORE" $case_name before)")

@@ -10,6 +10,7 @@
 #include <fvfsi/base/parsed_function.h>
 #include <fvfsi/base/patch_list.h>
 #include <fvfsi/fv/deferred_correction.h>
+#include <fvfsi/fv/face_loop.h>
 
 #include <algorithm>
 #include <limits>
@@ -125,9 +126,13 @@ namespace fvfsi
         "Mesh motion/Moving patches: Type = Laplace needs at least one patch");
     for (auto& patch : moving)
     {
-      for (const auto& face : reference.faces)
-        if (face.N == invalid_cell && face.patch == patch.id)
-          patch.vertices.insert(patch.vertices.end(), face.vertices.begin(), face.vertices.end());
+      for_each_stored_boundary_face(
+        reference,
+        [&patch](const unsigned int, const FaceGeometry<dim>& face)
+        {
+          if (face.patch == patch.id)
+            patch.vertices.insert(patch.vertices.end(), face.vertices.begin(), face.vertices.end());
+        });
       std::sort(patch.vertices.begin(), patch.vertices.end());
       patch.vertices.erase(std::unique(patch.vertices.begin(), patch.vertices.end()),
                            patch.vertices.end());
@@ -138,17 +143,20 @@ namespace fvfsi
     std::set<unsigned int> sliding;
     for (const auto& name : parse_names(prm.sliding_patches))
       sliding.insert(mesh_parameters.patch_id(name, "Mesh motion/Sliding patches"));
-    for (const auto& face : reference.faces)
-      if (face.N == invalid_cell && sliding.count(face.patch) == 0)
-      {
-        for (unsigned int j = 0; j < dim; ++j)
-          bc[j].patch_type[face.patch] = BoundaryType::dirichlet;
-        bool is_moving = false;
-        for (const auto& patch : moving)
-          is_moving = is_moving || patch.id == face.patch;
-        for (const unsigned int v : face.vertices)
-          boundary_vertex[v] = std::max(boundary_vertex[v], is_moving ? 1 : 0);
-      }
+    for_each_stored_boundary_face(reference,
+                                  [&](const unsigned int, const FaceGeometry<dim>& face)
+                                  {
+                                    if (sliding.count(face.patch) > 0)
+                                      return;
+                                    for (unsigned int j = 0; j < dim; ++j)
+                                      bc[j].patch_type[face.patch] = BoundaryType::dirichlet;
+                                    bool is_moving = false;
+                                    for (const auto& patch : moving)
+                                      is_moving = is_moving || patch.id == face.patch;
+                                    for (const unsigned int v : face.vertices)
+                                      boundary_vertex[v] =
+                                        std::max(boundary_vertex[v], is_moving ? 1 : 0);
+                                  });
     for (unsigned int j = 0; j < dim; ++j)
       bc[j].value.assign(reference.faces.size(), 0.0);
     face_values.assign(reference.faces.size(), 0.0);
@@ -168,13 +176,13 @@ namespace fvfsi
           throw std::runtime_error("Mesh motion: patch `" + name +
                                    "` is both a Moving and a Sliding patch");
       std::array<double, dim + 1> sums{}; // area |n_k| per k, then the area
-      for (const auto& face : reference.faces)
-        if (face.kind == FaceKind::boundary && face.patch == id)
-        {
-          for (unsigned int k = 0; k < dim; ++k)
-            sums[k] += face.area * std::abs(face.n[k]);
-          sums[dim] += face.area;
-        }
+      for_each_patch_face(reference, id,
+                          [&sums](const unsigned int, const FaceGeometry<dim>& face)
+                          {
+                            for (unsigned int k = 0; k < dim; ++k)
+                              sums[k] += face.area * std::abs(face.n[k]);
+                            sums[dim] += face.area;
+                          });
       Utilities::MPI::sum(ArrayView<const double>(sums.data(), sums.size()), reference.comm(),
                           ArrayView<double>(sums.data(), sums.size()));
       const unsigned int axis = std::max_element(sums.begin(), sums.begin() + dim) - sums.begin();
@@ -184,10 +192,13 @@ namespace fvfsi
       sliding_axis[id] = axis;
       for (unsigned int j = 0; j < dim; ++j)
         bc[j].patch_type[id] = j == axis ? BoundaryType::dirichlet : BoundaryType::neumann;
-      for (const auto& face : reference.faces)
-        if (face.N == invalid_cell && face.patch == id)
-          for (const unsigned int v : face.vertices)
-            fixed_components[v] |= 1u << axis;
+      for_each_stored_boundary_face(reference,
+                                    [&](const unsigned int, const FaceGeometry<dim>& face)
+                                    {
+                                      if (face.patch == id)
+                                        for (const unsigned int v : face.vertices)
+                                          fixed_components[v] |= 1u << axis;
+                                    });
     }
   }
 
@@ -228,23 +239,23 @@ namespace fvfsi
       return;
     // Centres of all moving-patch faces, from every rank, in an R-tree for nearest queries.
     std::vector<Point<dim>> local;
-    for (const auto& face : reference.faces)
-      if (face.kind == FaceKind::boundary)
-        for (const auto& patch : moving)
-          if (patch.id == face.patch)
-            local.push_back(face.centre);
+    for (const auto& patch : moving)
+      for_each_patch_face(reference, patch.id,
+                          [&local](const unsigned int, const FaceGeometry<dim>& face)
+                          { local.push_back(face.centre); });
     std::vector<Point<dim>> centres;
     for (const auto& part : Utilities::MPI::all_gather(reference.comm(), local))
       centres.insert(centres.end(), part.begin(), part.end());
     const auto tree = pack_rtree(centres);
-    for (unsigned int f = 0; f < reference.faces.size(); ++f)
-    {
-      const auto& face = reference.faces[f];
-      std::vector<Point<dim>> nearest;
-      tree.query(boost::geometry::index::nearest(face.centre, 1), std::back_inserter(nearest));
-      const double r = std::max(face.centre.distance(nearest[0]), face.d_n);
-      gamma[f] = prm.diffusivity == Diffusivity::inverse_distance ? 1 / r : 1 / (r * r);
-    }
+    for_each_stored_face(
+      reference,
+      [&](const unsigned int f, const FaceGeometry<dim>& face)
+      {
+        std::vector<Point<dim>> nearest;
+        tree.query(boost::geometry::index::nearest(face.centre, 1), std::back_inserter(nearest));
+        const double r = std::max(face.centre.distance(nearest[0]), face.d_n);
+        gamma[f] = prm.diffusivity == Diffusivity::inverse_distance ? 1 / r : 1 / (r * r);
+      });
   }
 
   template <int dim>
@@ -305,26 +316,30 @@ namespace fvfsi
     for (unsigned int j = 0; j < dim; ++j)
     {
       rhs_boundary = 0;
-      for (unsigned int f = 0; f < reference.faces.size(); ++f)
+      for_each_stored_boundary_face(reference,
+                                    [&](const unsigned int f, const FaceGeometry<dim>& face)
+                                    {
+                                      if (bc[j].type(face) == BoundaryType::neumann)
+                                        return; // a zero normal gradient: bc[j].value stays 0
+                                      double value = 0;
+                                      for (const unsigned int v : face.vertices)
+                                        value += d_vertex[v][j] / face.vertices.size();
+                                      bc[j].value[f] = value;
+                                      face_values[f] = value;
+                                    });
+      // Eq. 23 on the owned boundary faces, as Laplacian::assemble adds it.
+      for (const unsigned int f : reference.boundary_faces())
       {
         const auto& face = reference.faces[f];
-        if (face.N != invalid_cell || bc[j].type(face) == BoundaryType::neumann)
-          continue; // a zero normal gradient: bc[j].value stays 0
-        double value = 0;
-        for (const unsigned int v : face.vertices)
-          value += d_vertex[v][j] / face.vertices.size();
-        bc[j].value[f] = value;
-        face_values[f] = value;
-        if (face.kind == FaceKind::boundary) // Eq. 23, as Laplacian::assemble adds it
-          rhs_boundary.local_element(face.P) += gamma[f] * face.area / face.d_n * value;
+        if (bc[j].type(face) == BoundaryType::dirichlet)
+          rhs_boundary.local_element(face.P) += gamma[f] * face.area / face.d_n * bc[j].value[f];
       }
       const auto neumann_face_values = [&]()
       {
         if (sliding_axis.empty())
           return;
-        for (unsigned int f = 0; f < reference.faces.size(); ++f)
-          if (reference.faces[f].N == invalid_cell &&
-              bc[j].type(reference.faces[f]) == BoundaryType::neumann)
+        for (const unsigned int f : reference.all_boundary_faces())
+          if (bc[j].type(reference.faces[f]) == BoundaryType::neumann)
             face_values[f] = operators.laplacian.boundary_value(f, d_cell[j], grad_d[j], bc[j]);
       };
       DeferredCorrection control;

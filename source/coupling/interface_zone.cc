@@ -23,7 +23,8 @@ namespace fvfsi
       std::array<Point<dim>, GeometryInfo<dim>::vertices_per_face> vertices;
     };
 
-    /// The faces for which `on_interface` is true, of all ranks (flattened for all_gather).
+    /// The boundary faces of owned cells for which `on_interface` is true, of all ranks
+    /// (flattened for all_gather).
     template <int dim, typename Predicate>
     std::vector<GatheredFace<dim>> gather_faces(const FVGeometry<dim>& geometry,
                                                 const Predicate& on_interface)
@@ -31,8 +32,8 @@ namespace fvfsi
       constexpr unsigned int n_points = GeometryInfo<dim>::vertices_per_face;
       constexpr unsigned int stride = 2 * dim + 1 + n_points * dim;
       std::vector<double> mine;
-      for (const auto& face : geometry.faces)
-        if (on_interface(face))
+      for (const unsigned int f : geometry.boundary_faces())
+        if (const auto& face = geometry.faces[f]; on_interface(face))
         {
           mine.insert(mine.end(), &face.centre[0], &face.centre[0] + dim);
           mine.insert(mine.end(), &face.n[0], &face.n[0] + dim);
@@ -65,11 +66,8 @@ namespace fvfsi
                                     const std::string& name)
       : name(name), comm(geometry.comm())
   {
-    const auto on_interface = [&](const FaceGeometry<dim>& face)
-    {
-      return face.kind == FaceKind::boundary &&
-             std::find(patches.begin(), patches.end(), face.patch) != patches.end();
-    };
+    const auto on_interface = [&](const FaceGeometry<dim>& face) // a boundary face
+    { return std::find(patches.begin(), patches.end(), face.patch) != patches.end(); };
     std::vector<GatheredFace<dim>> faces = gather_faces(geometry, on_interface);
     if (faces.empty())
       throw std::runtime_error("Interface " + name + ": its patches have no boundary face");
@@ -116,7 +114,7 @@ namespace fvfsi
 
     // The way back to the local mesh.
     std::map<unsigned int, unsigned int> local_point;
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    for (const unsigned int f : geometry.boundary_faces())
       if (on_interface(geometry.faces[f]))
       {
         local_face_list.emplace_back(f, face_index.at(point_key(geometry.faces[f].centre)));

@@ -21,8 +21,6 @@ namespace fvfsi
     double speed = 0, p_max = -1e300, p_min = 1e300, g = 0;
     for (const unsigned int f : geometry.boundary_faces())
     {
-      if (geometry.faces[f].kind == FaceKind::ghost_boundary)
-        continue;
       const Type t = conditions.type(f);
       if (t == Type::velocity_inlet || t == Type::wall)
         speed = std::max(speed, boundary_u[f].norm());

@@ -6,6 +6,7 @@
 
 #include <fvfsi/base/exceptions.h>
 #include <fvfsi/fluid/fluid_solver.h>
+#include <fvfsi/fv/face_loop.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -113,17 +114,12 @@ namespace fvfsi
   double FluidSolver<dim>::face_velocity_change(const FaceVector& before) const
   {
     // max_f |F_f - before_f| / S_f over max_f |F_f| / S_f.
-    double change = 0, largest = 0;
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.kind == FaceKind::ghost_boundary)
-        continue;
-      change = std::max(change, std::abs(F[f] - before[f]) / face.area);
-      largest = std::max(largest, std::abs(F[f]) / face.area);
-    }
-    change = Utilities::MPI::max(change, geometry.comm());
-    largest = Utilities::MPI::max(largest, geometry.comm());
+    const double change =
+      face_maximum(geometry, [&](const unsigned int f, const FaceGeometry<dim>& face)
+                   { return std::abs(F[f] - before[f]) / face.area; });
+    const double largest =
+      face_maximum(geometry, [&](const unsigned int f, const FaceGeometry<dim>& face)
+                   { return std::abs(F[f]) / face.area; });
     return largest > 0 ? change / largest : 0;
   }
 

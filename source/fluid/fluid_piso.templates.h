@@ -7,6 +7,8 @@
 
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/fv/deferred_correction.h>
+#include <fvfsi/fv/face_loop.h>
+#include <fvfsi/fv/terms.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,34 +24,24 @@ namespace fvfsi
     momentum.zero();
     for (unsigned int j = 0; j < dim; ++j)
       B_rest[j] = 0;
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.kind == FaceKind::ghost_boundary)
-        continue;
-      const double phi = F[f] - F_mesh[f]; // flux relative to the moving face
-      // + u_P sum_f F^mesh_f: with the time term's c0_P (see fluid_solver.h) the spatial rows
-      // then sum to sum_f F_f. Zero on a fixed mesh.
-      momentum.diagonal[face.P] += F_mesh[f];
-      if (face.kind == FaceKind::interior)
-        momentum.diagonal[face.N] -= F_mesh[f];
-      if (face.N != invalid_cell)
+    // Eq. 2 over V_P, face by face: phi_f = F_f - F^mesh_f is the flux relative to the moving
+    // face. The mesh-flux term + u_P sum_f F^mesh_f and the time term's c0_P (see fluid_solver.h)
+    // make the spatial rows sum to sum_f F_f (both zero on a fixed mesh).
+    for_each_face(
+      geometry,
+      [this](const unsigned int f, const FaceGeometry<dim>& face) // between two cells
       {
-        // Viscous term: orthogonal part of Eq. 19 implicit (Eq. 27). Convection: upwind
-        // implicit, phi u_f leaves P and enters N.
-        momentum.add_face_diffusion(f, prm.nu * face.area / face.d_n);
-        momentum.diagonal[face.P] += std::max(phi, 0.0);
-        momentum.upper[f] += std::min(phi, 0.0);
-        if (face.kind == FaceKind::interior)
-        {
-          momentum.diagonal[face.N] += std::max(-phi, 0.0);
-          momentum.lower[f] -= std::max(phi, 0.0);
-        }
-        add_convection_correction(f, phi);
-      }
-      else
-        add_boundary_face_momentum(f, phi);
-    }
+        const double phi = F[f] - F_mesh[f];
+        fvm::mesh_flux(momentum, face, F_mesh[f]);      // + u_P F^mesh_f
+        fvm::laplacian(momentum, f, face, prm.nu);      // - nu S_f (n.grad u)_f, Eq. 27 implicit
+        fvm::upwind_convection(momentum, f, face, phi); // + phi_f u_f, upwind part implicit
+        add_convection_correction(f, phi);              // + phi_f (u_f - u_f^upwind), deferred
+      },
+      [this](const unsigned int f, const FaceGeometry<dim>& face) // boundary
+      {
+        fvm::mesh_flux(momentum, face, F_mesh[f]);
+        add_boundary_face_momentum(f, F[f] - F_mesh[f]);
+      });
     // Explicit non-orthogonal part of Eq. 19 for the viscous term.
     for (unsigned int j = 0; j < dim; ++j)
       operators.laplacian.add_correction(nu_f, velocity_bc, grad_u[j], B_rest[j]);
@@ -61,17 +53,18 @@ namespace fvfsi
   {
     const auto& face = geometry.faces[f];
     const unsigned int P = face.P;
-    const double a_diffusion = prm.nu * face.area / face.d_n; // Eq. 27
     const Tensor<1, dim>& u_b = boundary_u[f];
     switch (conditions.type(f))
     {
       case Type::velocity_inlet:
       case Type::wall:
+      {
         // u_b given: Eq. 23 for the viscous flux, the convected value is u_b.
-        momentum.diagonal[P] += a_diffusion;
+        const double a_diffusion = fvm::laplacian(momentum, f, face, prm.nu);
         for (unsigned int j = 0; j < dim; ++j)
           B_rest[j].local_element(P) += (a_diffusion - phi) * u_b[j];
         break;
+      }
       case Type::outlet:
         // Zero normal gradient: no viscous flux; outflow convects u_P (implicit) corrected to
         // u_b, backflow convects u_b (explicit).
@@ -83,10 +76,13 @@ namespace fvfsi
                                              : std::max(phi, 0.0) * (u_b[j] - u[P][j]));
         break;
       case Type::symmetry:
+      {
         // No flux through the plane; the viscous force of the normal velocity, explicit.
+        const double a_diffusion = prm.nu * face.area / face.d_n; // Eq. 27
         for (unsigned int j = 0; j < dim; ++j)
           B_rest[j].local_element(P) += a_diffusion * (u_b[j] - u[P][j]);
         break;
+      }
     }
   }
 
@@ -136,9 +132,7 @@ namespace fvfsi
         correction = to_face * grad_u[j][U];
       else // central
         correction = face.interpolate(u[face.P][j], u[face.N][j]) - u[U][j];
-      B_rest[j].local_element(face.P) -= phi * correction;
-      if (face.kind == FaceKind::interior)
-        B_rest[j].local_element(face.N) += phi * correction;
+      fvc::outflow(face, phi * correction, B_rest[j]);
     }
   }
 
@@ -178,38 +172,9 @@ namespace fvfsi
     a_star.update_ghost_values();
     compute_consistent_coefficients();
     pressure_equation.zero();
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.kind == FaceKind::ghost_boundary)
-        continue;
-      if (face.N == invalid_cell && conditions.type(f) != Type::outlet)
-      {
-        gamma_p[f] = gamma_c[f] = 0; // the flux is given
-        continue;
-      }
-      const double inverse_a_star =
-        face.N == invalid_cell
-          ? 1 / a_star.local_element(face.P)
-          : face.interpolate_reciprocal(a_star.local_element(face.P), a_star.local_element(face.N));
-      a_star_f[f] = 1 / inverse_a_star;
-      const auto r = volume_ratios(f);
-      const double alpha = prm.transient ? outer_alpha : relaxation;
-      const double pseudo = a_star_f[f] * (1 - alpha) / alpha; // as c0_P's, on the face
-      c0_face[f] = prm.transient ? c1 * r[0] - c2 * r[1] + pseudo : pseudo;
-      gamma_p[f] = 1 / (c0_face[f] + a_star_f[f]);
-      gamma_c[f] = gamma_p[f];
-      if (simplec()) // 1 / (a - H1)_f, interpolated as a*_f
-        gamma_c[f] = face.N == invalid_cell
-                       ? 1 / a_tilde.local_element(face.P)
-                       : face.interpolate_reciprocal(a_tilde.local_element(face.P),
-                                                     a_tilde.local_element(face.N));
-      const double coefficient = gamma_c[f] * face.area / face.d_n;
-      if (face.N == invalid_cell)
-        pressure_equation.diagonal[face.P] += coefficient; // Dirichlet (outlet), Eq. 23
-      else
-        pressure_equation.add_face_diffusion(f, coefficient);
-    }
+    for_each_face(geometry,
+                  [this, c1 = c1, c2 = c2](const unsigned int f, const FaceGeometry<dim>& face)
+                  { add_pressure_face(f, face, c1, c2); });
     // No outlet: fix the level by doubling the diagonal of global cell 0 (exact for the
     // compatible singular system: its solution with p = 0 there solves the modified one).
     if (!pressure_level_fixed && geometry.n_owned_cells() > 0 && geometry.global_index(0) == 0)
@@ -217,6 +182,35 @@ namespace fvfsi
     pressure_equation.copy_to(pressure_matrix);
     if (refresh_preconditioners() || !pressure_solver.initialized())
       pressure_solver.initialize(pressure_matrix);
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::add_pressure_face(const unsigned int f, const FaceGeometry<dim>& face,
+                                           const double c1, const double c2)
+  {
+    // The face's Gamma_f and its share of -div(Gamma grad p) (Eq. 19 implicit, Eq. 23 at an
+    // outlet); on inlets and walls the flux is given (Gamma_f = 0).
+    if (face.N == invalid_cell && conditions.type(f) != Type::outlet)
+    {
+      gamma_p[f] = gamma_c[f] = 0;
+      return;
+    }
+    const auto reciprocal = [&face](const CellVector& x)
+    {
+      return face.N == invalid_cell
+               ? 1 / x.local_element(face.P)
+               : face.interpolate_reciprocal(x.local_element(face.P), x.local_element(face.N));
+    };
+    a_star_f[f] = 1 / reciprocal(a_star);
+    const auto r = volume_ratios(f);
+    const double alpha = prm.transient ? outer_alpha : relaxation;
+    const double pseudo = a_star_f[f] * (1 - alpha) / alpha; // as c0_P's, on the face
+    c0_face[f] = prm.transient ? c1 * r[0] - c2 * r[1] + pseudo : pseudo;
+    gamma_p[f] = 1 / (c0_face[f] + a_star_f[f]);
+    gamma_c[f] = gamma_p[f];
+    if (simplec()) // 1 / (a - H1)_f, interpolated as a*_f
+      gamma_c[f] = reciprocal(a_tilde);
+    fvm::laplacian(pressure_equation, f, face, gamma_c[f]);
   }
 
   template <int dim>
@@ -254,26 +248,27 @@ namespace fvfsi
     // the flux is given.
     const auto [c0, c1, c2] = time_coefficients();
     (void)c0;
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    for (const unsigned int f : evaluated_faces(geometry)) // as for_each_face, see face_loop.h
     {
       const auto& face = geometry.faces[f];
-      if (face.kind == FaceKind::ghost_boundary)
-        continue;
       if (face.N == invalid_cell && conditions.type(f) != Type::outlet)
       {
         F_star[f] = conditions.type(f) == Type::velocity_inlet ? face.S * boundary_u[f] : F_mesh[f];
         continue;
       }
+      // (h / a*)_f with the skewness correction m . (grad u)_f, m from the interpolation point
+      // to the face centre; the old velocities at the face.
       const unsigned int P = face.P, N = face.N;
-      Tensor<1, dim> h_by_a;
-      Tensor<1, dim> m;                     // from the interpolation point to the face centre
-      std::array<Tensor<1, dim>, dim> grad; // interpolated grad u_j
+      Tensor<1, dim> h_by_a, m, u_o, u_oo;
+      std::array<Tensor<1, dim>, dim> grad;
       if (N == invalid_cell)
       {
         h_by_a = h[P] / a_star.local_element(P);
         m = face.centre - geometry.centroid[P];
         for (unsigned int j = 0; j < dim; ++j)
           grad[j] = grad_u[j][P];
+        u_o = u_old[P];
+        u_oo = u_old2[P];
       }
       else
       {
@@ -282,15 +277,13 @@ namespace fvfsi
         m = face.centre - face.interpolate(geometry.centroid[P], geometry.centroid[N]);
         for (unsigned int j = 0; j < dim; ++j)
           grad[j] = face.interpolate(grad_u[j][P], grad_u[j][N]);
+        u_o = face.interpolate(u_old[P], u_old[N]);
+        u_oo = face.interpolate(u_old2[P], u_old2[N]);
       }
       for (unsigned int j = 0; j < dim; ++j)
-        h_by_a[j] += m * grad[j]; // skewness correction
+        h_by_a[j] += m * grad[j];
       // Old fluxes carried to the new face: F^o + u^o_f . (S_f - S_f^o) (exactly F^o on a fixed
       // mesh), weighted by the volume ratios r1_f, r2_f.
-      const Tensor<1, dim> u_o =
-        N == invalid_cell ? u_old[P] : face.interpolate(u_old[P], u_old[N]);
-      const Tensor<1, dim> u_oo =
-        N == invalid_cell ? u_old2[P] : face.interpolate(u_old2[P], u_old2[N]);
       const double F_o = F_old[f] + u_o * (face.S - S_old[f]);
       const double F_oo = F_old2[f] + u_oo * (face.S - S_old2[f]);
       const auto r = volume_ratios(f);
@@ -316,17 +309,14 @@ namespace fvfsi
     // with Gamma = 1/a_f, the divergence of F* as source, Eq. 19's correction explicit and
     // updated by the non-orthogonal correctors.
     pressure_rhs = 0;
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.kind == FaceKind::ghost_boundary)
-        continue;
-      pressure_rhs.local_element(face.P) -= F_star[f];
-      if (face.kind == FaceKind::interior)
-        pressure_rhs.local_element(face.N) += F_star[f];
-      if (face.N == invalid_cell && conditions.type(f) == Type::outlet)
-        pressure_rhs.local_element(face.P) += gamma_c[f] * face.area / face.d_n * boundary_p[f];
-    }
+    for_each_face(geometry,
+                  [this](const unsigned int f, const FaceGeometry<dim>& face)
+                  {
+                    fvc::outflow(face, F_star[f], pressure_rhs);                      // - div F*
+                    if (face.N == invalid_cell && conditions.type(f) == Type::outlet) // Eq. 23
+                      pressure_rhs.local_element(face.P) +=
+                        gamma_c[f] * face.area / face.d_n * boundary_p[f];
+                  });
     // The flux correction below must use the gradient of the last solve's correction, so the
     // gradient is only updated between solves.
     DeferredCorrection control;
@@ -356,17 +346,16 @@ namespace fvfsi
   void FluidSolver<dim>::correct_fluxes()
   {
     TimerOutput::Scope scope(timer_output, "flux and velocity correction");
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.kind == FaceKind::ghost_boundary)
-        continue;
-      if (gamma_c[f] == 0)
-        F[f] = F_star[f];
-      else
-        F[f] = F_star[f] - gamma_c[f] * face.area *
-                             operators.laplacian.normal_gradient(f, p, grad_p, pressure_bc);
-    }
+    // F_f = F*_f - Gamma_f S_f (n.grad p)_f.
+    for_each_face(geometry,
+                  [this](const unsigned int f, const FaceGeometry<dim>& face)
+                  {
+                    F[f] = gamma_c[f] == 0
+                             ? F_star[f]
+                             : F_star[f] -
+                                 gamma_c[f] * face.area *
+                                   operators.laplacian.normal_gradient(f, p, grad_p, pressure_bc);
+                  });
   }
 
   template <int dim>

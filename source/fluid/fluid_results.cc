@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <fvfsi/fluid/fluid_solver.h>
+#include <fvfsi/fv/face_loop.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,13 +18,9 @@ namespace fvfsi
   Tensor<1, dim> FluidSolver<dim>::patch_force(const unsigned int patch) const
   {
     Tensor<1, dim> force;
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.kind != FaceKind::boundary || face.patch != patch)
-        continue;
-      force += face.area * wall_traction(f);
-    }
+    for_each_patch_face(geometry, patch,
+                        [&](const unsigned int f, const FaceGeometry<dim>& face)
+                        { force += face.area * wall_traction(f); });
     return Utilities::MPI::sum(force, geometry.comm());
   }
 
@@ -70,19 +67,12 @@ namespace fvfsi
   double FluidSolver<dim>::continuity_error() const
   {
     std::vector<double> net(geometry.n_owned_cells(), 0.0), total(geometry.n_owned_cells(), 0.0);
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.kind == FaceKind::ghost_boundary)
-        continue;
-      net[face.P] += F[f];
-      total[face.P] += std::abs(F[f]);
-      if (face.kind == FaceKind::interior)
-      {
-        net[face.N] -= F[f];
-        total[face.N] += std::abs(F[f]);
-      }
-    }
+    for_each_face(geometry,
+                  [&](const unsigned int f, const FaceGeometry<dim>& face)
+                  {
+                    add_outflow(face, F[f], net);                              // sum_f F_f
+                    add_to_cells(face, std::abs(F[f]), std::abs(F[f]), total); // sum_f |F_f|
+                  });
     double error = 0;
     for (unsigned int c = 0; c < net.size(); ++c)
       error = std::max(error, std::abs(net[c]) / std::max(total[c], 1e-300));
@@ -93,16 +83,12 @@ namespace fvfsi
   double FluidSolver<dim>::courant_number() const
   {
     std::vector<double> outflow(geometry.n_owned_cells(), 0.0);
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.kind == FaceKind::ghost_boundary)
-        continue;
-      const double phi = std::abs(F[f] - F_mesh[f]);
-      outflow[face.P] += phi;
-      if (face.kind == FaceKind::interior)
-        outflow[face.N] += phi;
-    }
+    for_each_face(geometry,
+                  [&](const unsigned int f, const FaceGeometry<dim>& face)
+                  {
+                    const double phi = std::abs(F[f] - F_mesh[f]); // relative to the face
+                    add_to_cells(face, phi, phi, outflow);
+                  });
     double courant = 0;
     for (unsigned int c = 0; c < outflow.size(); ++c)
       courant = std::max(courant, clock.time_step() * outflow[c] / (2 * geometry.cell_volume[c]));

@@ -7,10 +7,12 @@
 #include <fvfsi/base/parsed_function.h>
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/fv/divergence_guard.h>
+#include <fvfsi/fv/face_loop.h>
 #include <fvfsi/fv/ghost_faces.h>
 
 #include "fluid_piso.templates.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -56,11 +58,9 @@ namespace fvfsi
                         &boundary_p, &swept, &swept_old, &F_before_corrector, &F_outer_start})
       field->assign(n_faces, 0.0);
     V_old = V_old2 = geometry.cell_volume;
-    for (const auto& face : geometry.faces)
-    {
-      S_old.push_back(face.S);
-      r_f_old.push_back(face.centre);
-    }
+    S_old.resize(n_faces);
+    r_f_old.resize(n_faces);
+    record_face_geometry();
     S_old2 = S_old;
     r_f_old2 = r_f_old;
     boundary_u.assign(n_faces, Tensor<1, dim>());
@@ -84,19 +84,19 @@ namespace fvfsi
       [](const Type t) { return t == Type::outlet ? 1u : static_cast<unsigned int>(dim); }, "Fluid",
       "Fluid/Velocity inlet, Outlet, Wall or Symmetry");
     double n_outlet_faces = 0;
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-      if (geometry.faces[f].N == invalid_cell)
+    for_each_stored_boundary_face(
+      geometry,
+      [&](const unsigned int f, const FaceGeometry<dim>& face)
       {
         const Type t = conditions.type(f);
-        const unsigned int id = geometry.faces[f].patch;
         const bool velocity_given = t == Type::velocity_inlet || t == Type::wall;
-        velocity_bc.patch_type[id] =
+        velocity_bc.patch_type[face.patch] =
           velocity_given ? BoundaryType::dirichlet : BoundaryType::neumann;
-        pressure_bc.patch_type[id] =
+        pressure_bc.patch_type[face.patch] =
           t == Type::outlet ? BoundaryType::dirichlet : BoundaryType::neumann;
         if (t == Type::outlet)
           n_outlet_faces += 1;
-      }
+      });
     // Without a pressure boundary the pressure is fixed to 0 in one reference cell.
     pressure_level_fixed = Utilities::MPI::sum(n_outlet_faces, geometry.comm()) > 0;
     velocity_bc.value.assign(geometry.faces.size(), 0.0); // values live in boundary_u
@@ -139,14 +139,13 @@ namespace fvfsi
     update_velocity_boundary_values();
     update_velocity_gradients();
     update_velocity_boundary_values();
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.N == invalid_cell)
-        F[f] = face.S * boundary_u[f];
-      else
-        F[f] = face.S * face.interpolate(u[face.P], u[face.N]);
-    }
+    for_each_stored_face(geometry,
+                         [this](const unsigned int f, const FaceGeometry<dim>& face)
+                         {
+                           F[f] = face.S * (face.N == invalid_cell
+                                              ? boundary_u[f]
+                                              : face.interpolate(u[face.P], u[face.N]));
+                         });
     F_old = F;
     F_old2 = F;
     u_old = u;
@@ -197,8 +196,8 @@ namespace fvfsi
     FaceVector boundary_values(geometry.faces.size());
     for (unsigned int j = 0; j < dim; ++j)
     {
-      for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-        boundary_values[f] = boundary_u[f][j];
+      std::transform(boundary_u.begin(), boundary_u.end(), boundary_values.begin(),
+                     [j](const Tensor<1, dim>& u_b) { return u_b[j]; });
       operators.gradient(u.components[j], boundary_values, vertex_u[j], grad_u[j]);
     }
   }
@@ -250,12 +249,19 @@ namespace fvfsi
     std::fill(swept.begin(), swept.end(), 0.0);
     S_old2 = S_old;
     r_f_old2 = r_f_old;
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      S_old[f] = geometry.faces[f].S;
-      r_f_old[f] = geometry.faces[f].centre;
-    }
+    record_face_geometry();
     update_volume_ratios();
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::record_face_geometry()
+  {
+    for_each_stored_face(geometry,
+                         [this](const unsigned int f, const FaceGeometry<dim>& face)
+                         {
+                           S_old[f] = face.S;
+                           r_f_old[f] = face.centre;
+                         });
   }
 
   template <int dim>
@@ -277,8 +283,8 @@ namespace fvfsi
     // c0 (V - V^o) - c2 (V^o - V^oo) = c0 V - c1 V^o + c2 V^oo (c1 = c0 + c2).
     const auto [c0, c1, c2] = time_coefficients();
     (void)c1;
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-      F_mesh[f] = prm.transient ? c0 * swept[f] - c2 * swept_old[f] : 0.0;
+    for (unsigned int i = 0; i < F_mesh.size(); ++i)
+      F_mesh[i] = prm.transient ? c0 * swept[i] - c2 * swept_old[i] : 0.0;
   }
 
   template <int dim>
@@ -286,24 +292,12 @@ namespace fvfsi
   {
     // Once per change of the geometry or the time levels, not per face and PISO corrector.
     face_volume_ratio.resize(geometry.faces.size());
-    const auto ratios = [this](const unsigned int c)
-    {
-      const double V = geometry.cell_volume[c];
-      return std::array<double, 2>{{V_old[c] / V, V_old2[c] / V}};
-    };
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      const auto r_P = ratios(face.P);
-      if (face.N == invalid_cell)
-        face_volume_ratio[f] = r_P;
-      else
-      {
-        const auto r_N = ratios(face.N);
-        face_volume_ratio[f] = {
-          {face.interpolate(r_P[0], r_N[0]), face.interpolate(r_P[1], r_N[1])}};
-      }
-    }
+    const auto r1 = [this](const unsigned int c) { return V_old[c] / geometry.cell_volume[c]; };
+    const auto r2 = [this](const unsigned int c) { return V_old2[c] / geometry.cell_volume[c]; };
+    for_each_stored_face(geometry,
+                         [&](const unsigned int f, const FaceGeometry<dim>& face) {
+                           face_volume_ratio[f] = {{face_value(face, r1), face_value(face, r2)}};
+                         });
   }
 
   template <int dim>

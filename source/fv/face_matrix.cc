@@ -33,19 +33,6 @@ namespace fvfsi
   }
 
   template <int dim>
-  void FaceMatrix<dim>::add_face_diffusion(const unsigned int f, const double a)
-  {
-    const auto& face = geometry.faces[f];
-    diagonal[face.P] += a;
-    upper[f] -= a;
-    if (face.kind == FaceKind::interior)
-    {
-      diagonal[face.N] += a;
-      lower[f] -= a;
-    }
-  }
-
-  template <int dim>
   void FaceMatrix<dim>::copy_to(TrilinosWrappers::SparseMatrix& matrix) const
   {
     if (&matrix != layout_of || entry_source.empty())

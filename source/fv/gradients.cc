@@ -1,3 +1,4 @@
+#include <fvfsi/fv/face_loop.h>
 #include <fvfsi/fv/gradients.h>
 
 #include <algorithm>
@@ -69,19 +70,16 @@ namespace fvfsi
                         CellGradient<dim>& gradient)
     {
       std::vector<Tensor<1, dim>> sum(geometry.n_owned_cells());
-      for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-      {
-        const auto& face = geometry.faces[f];
-        if (face.kind == FaceKind::ghost_boundary)
-          continue;
-        const double phi_f = face.N == invalid_cell ? boundary_values[f]
-                                                    : face.interpolate(phi.local_element(face.P),
-                                                                       phi.local_element(face.N)) +
-                                                        correction(f);
-        sum[face.P] += phi_f * face.S;
-        if (face.kind == FaceKind::interior)
-          sum[face.N] -= phi_f * face.S;
-      }
+      for_each_face(geometry,
+                    [&](const unsigned int f, const FaceGeometry<dim>& face)
+                    {
+                      const double phi_f =
+                        face.N == invalid_cell
+                          ? boundary_values[f]
+                          : face.interpolate(phi.local_element(face.P), phi.local_element(face.N)) +
+                              correction(f);
+                      add_outflow(face, Tensor<1, dim>(phi_f * face.S), sum);
+                    });
       for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
         gradient.set(c, sum[c] / geometry.cell_volume[c]);
       gradient.update_ghost_values();
@@ -123,15 +121,12 @@ namespace fvfsi
   void LeastSquaresGradient<dim>::reinit()
   {
     inverse_normal_matrix.assign(geometry.n_owned_cells(), Tensor<2, dim>());
-    for (const auto& face : geometry.faces)
-    {
-      if (face.kind == FaceKind::ghost_boundary)
-        continue;
-      const Tensor<2, dim> dd = outer_product(face.d, face.d) / face.d.norm_square();
-      inverse_normal_matrix[face.P] += dd;
-      if (face.kind == FaceKind::interior)
-        inverse_normal_matrix[face.N] += dd;
-    }
+    for_each_face(geometry,
+                  [this](const unsigned int, const FaceGeometry<dim>& face)
+                  {
+                    const Tensor<2, dim> dd = outer_product(face.d, face.d) / face.d.norm_square();
+                    add_to_cells(face, dd, dd, inverse_normal_matrix);
+                  });
     for (auto& M : inverse_normal_matrix)
       M = invert(M);
   }
@@ -141,20 +136,16 @@ namespace fvfsi
                                           CellGradient<dim>& gradient) const
   {
     std::vector<Tensor<1, dim>> rhs(geometry.n_owned_cells());
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.kind == FaceKind::ghost_boundary)
-        continue;
-      const double phi_P = phi.local_element(face.P);
-      const double phi_other =
-        face.N == invalid_cell ? boundary_values[f] : phi.local_element(face.N);
-      // Both sides see the same d d^T / |d|^2 and the same d (phi_N - phi_P) / |d|^2.
-      const Tensor<1, dim> term = face.d * (phi_other - phi_P) / face.d.norm_square();
-      rhs[face.P] += term;
-      if (face.kind == FaceKind::interior)
-        rhs[face.N] += term;
-    }
+    for_each_face(geometry,
+                  [&](const unsigned int f, const FaceGeometry<dim>& face)
+                  {
+                    const double phi_P = phi.local_element(face.P);
+                    const double phi_other =
+                      face.N == invalid_cell ? boundary_values[f] : phi.local_element(face.N);
+                    // Both sides see the same d d^T / |d|^2 and the same d (phi_N - phi_P) / |d|^2.
+                    const Tensor<1, dim> term = face.d * (phi_other - phi_P) / face.d.norm_square();
+                    add_to_cells(face, term, term, rhs);
+                  });
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
       gradient.set(c, inverse_normal_matrix[c] * rhs[c]);
     gradient.update_ghost_values();

@@ -1,6 +1,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
+#include <fvfsi/fv/face_loop.h>
 #include <fvfsi/fv/laplacian.h>
 
 #include <stdexcept>
@@ -104,19 +105,17 @@ namespace fvfsi
                                       const CellGradient<dim>& grad, CellVector& rhs,
                                       const CellHessian<dim>* hessian) const
   {
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.kind == FaceKind::ghost_boundary ||
-          (face.kind == FaceKind::boundary && bc.type(face) == BoundaryType::neumann))
-        continue;
-      // The explicit flux Gamma S_f (explicit part / d_fn) enters P (it is on the side of phi_N)
-      // and leaves N.
-      const double flux = gamma[f] * face.area * explicit_part(face, grad, hessian) / face.d_n;
-      rhs.local_element(face.P) += flux;
-      if (face.kind == FaceKind::interior)
-        rhs.local_element(face.N) -= flux;
-    }
+    for_each_face(geometry,
+                  [&](const unsigned int f, const FaceGeometry<dim>& face)
+                  {
+                    if (face.N == invalid_cell && bc.type(face) == BoundaryType::neumann)
+                      return;
+                    // The explicit flux Gamma S_f (explicit part / d_fn) enters P (it is on the
+                    // side of phi_N) and leaves N.
+                    add_outflow(
+                      face, gamma[f] * face.area * explicit_part(face, grad, hessian) / face.d_n,
+                      rhs);
+                  });
   }
 
   template <int dim>

@@ -144,6 +144,8 @@ namespace fvfsi
         if (face.N == invalid_cell)
           all_boundary_face_list.push_back(faces.size());
         faces.push_back(face);
+        if (c < n_owned) // owned cells (local numbers below n_owned) first: a prefix of faces
+          n_faces_of_owned_cells = faces.size();
       }
     std::vector<std::vector<std::pair<unsigned int, unsigned int>>> cell_boundary_faces(
       cells.size());

@@ -4,6 +4,7 @@
 #include <fvfsi/base/parsed_function.h>
 #include <fvfsi/base/selection.h>
 #include <fvfsi/fv/deferred_correction.h>
+#include <fvfsi/fv/face_loop.h>
 #include <fvfsi/mesh/mesh_builder.h>
 #include <fvfsi/scenes/poisson.h>
 
@@ -75,8 +76,8 @@ namespace fvfsi
       QuadraticFitData data;
       data.weight_exponent = 6;
       data.value_faces.assign(fv->faces.size(), false);
-      for (unsigned int f = 0; f < fv->faces.size(); ++f)
-        data.value_faces[f] = fv->faces[f].N == invalid_cell;
+      for (const unsigned int f : fv->all_boundary_faces())
+        data.value_faces[f] = true;
       quadratic_fit = std::make_unique<QuadraticFit<dim>>(*fv, data);
     }
     else
@@ -97,21 +98,20 @@ namespace fvfsi
       bc.patch_type[mesh_parameters.patch_id(name, "Poisson/Neumann patches")] =
         BoundaryType::neumann;
     bc.value.assign(fv->faces.size(), 0.0);
-    for (unsigned int f = 0; f < fv->faces.size(); ++f)
-    {
-      const auto& face = fv->faces[f];
-      if (face.N != invalid_cell)
-        continue;
-      if (bc.type(face) == BoundaryType::dirichlet)
-        bc.value[f] = checked_value(exact, face.centre, 0, "Poisson/Exact solution");
-      else
+    for_each_stored_boundary_face(
+      *fv,
+      [this](const unsigned int f, const FaceGeometry<dim>& face)
       {
-        Tensor<1, dim> g;
-        for (unsigned int d = 0; d < dim; ++d)
-          g[d] = checked_value(exact_gradient, face.centre, d, "Poisson/Exact gradient");
-        bc.value[f] = face.n * g;
-      }
-    }
+        if (bc.type(face) == BoundaryType::dirichlet)
+          bc.value[f] = checked_value(exact, face.centre, 0, "Poisson/Exact solution");
+        else
+        {
+          Tensor<1, dim> g;
+          for (unsigned int d = 0; d < dim; ++d)
+            g[d] = checked_value(exact_gradient, face.centre, d, "Poisson/Exact gradient");
+          bc.value[f] = face.n * g;
+        }
+      });
     gamma.assign(fv->faces.size(), parameters.diffusivity);
     phi = fv->make_cell_vector();
     rhs_fixed = fv->make_cell_vector();
@@ -181,20 +181,20 @@ namespace fvfsi
       l2 += e * e * fv->cell_volume[c];
       volume += fv->cell_volume[c];
     }
-    for (unsigned int f = 0; f < fv->faces.size(); ++f)
-    {
-      const auto& face = fv->faces[f];
-      if (face.kind == FaceKind::ghost_boundary)
-        continue;
-      Tensor<1, dim> g;
-      for (unsigned int d = 0; d < dim; ++d)
-        g[d] = exact_gradient.value(face.centre, d);
-      const double e = laplacian->normal_gradient(f, phi, grad, bc, hessian_or_null()) - face.n * g;
-      double& max = face.N != invalid_cell ? max_gradient_error : max_boundary_gradient_error;
-      max = std::max(max, std::abs(e));
-      if (face.N != invalid_cell && face.counted_here)
-        l2_gradient += e * e * face.area * face.d_n; // weighted by the face's share of volume
-    }
+    for_each_face(*fv,
+                  [&](const unsigned int f, const FaceGeometry<dim>& face)
+                  {
+                    Tensor<1, dim> g;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      g[d] = exact_gradient.value(face.centre, d);
+                    const double e =
+                      laplacian->normal_gradient(f, phi, grad, bc, hessian_or_null()) - face.n * g;
+                    double& max =
+                      face.N != invalid_cell ? max_gradient_error : max_boundary_gradient_error;
+                    max = std::max(max, std::abs(e));
+                    if (face.N != invalid_cell && face.counted_here) // the face's share of volume
+                      l2_gradient += e * e * face.area * face.d_n;
+                  });
     result.n_cells = fv->n_global_cells();
     result.h = std::pow(Utilities::MPI::sum(volume, comm) / result.n_cells, 1.0 / dim);
     result.max_cell_error = Utilities::MPI::max(max_error, comm);

@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fvfsi/base/parsed_function.h>
+#include <fvfsi/fv/face_loop.h>
 #include <fvfsi/io/progress.h>
 #include <fvfsi/mesh/mesh_builder.h>
 #include <fvfsi/scenes/solid_scene.h>
@@ -107,14 +108,15 @@ namespace fvfsi
       {
         const unsigned int id = mesh_parameters.patch_id(patch, "Solid scene/Stress error patches");
         double max_error = 0;
-        for (unsigned int f = 0; f < fv->faces.size(); ++f)
-          if (fv->faces[f].kind == FaceKind::boundary && fv->faces[f].patch == id)
-          {
-            const Tensor<2, dim> sigma = solid->face_stress(f);
-            for (unsigned int k = 0; k < n; ++k)
-              max_error = std::max(max_error, std::abs(sigma[index[k].first][index[k].second] -
-                                                       exact.value(fv->faces[f].centre, k)));
-          }
+        for_each_patch_face(*fv, id,
+                            [&](const unsigned int f, const FaceGeometry<dim>& face)
+                            {
+                              const Tensor<2, dim> sigma = solid->face_stress(f);
+                              for (unsigned int k = 0; k < n; ++k)
+                                max_error = std::max(
+                                  max_error, std::abs(sigma[index[k].first][index[k].second] -
+                                                      exact.value(face.centre, k)));
+                            });
         result.max_stress_error.emplace_back(patch, Utilities::MPI::max(max_error, comm));
       }
     }

@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <fvfsi/fv/face_loop.h>
 #include <fvfsi/fv/ghost_faces.h>
 #include <fvfsi/solid/solid_solver.h>
 
@@ -172,12 +173,12 @@ namespace fvfsi
     // (G_ij = d u_j / d x_i; F and G^T share their singular values), over the face gradients
     // the forces use.
     double least = std::numeric_limits<double>::max();
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-      if (geometry.faces[f].kind != FaceKind::ghost_boundary)
-      {
-        const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + face_gradient(f);
-        least = std::min(least, eigenvalues(symmetrize(transpose(F) * F))[dim - 1]);
-      }
+    for_each_face(geometry,
+                  [&](const unsigned int f, const FaceGeometry<dim>&)
+                  {
+                    const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + face_gradient(f);
+                    least = std::min(least, eigenvalues(symmetrize(transpose(F) * F))[dim - 1]);
+                  });
     return std::sqrt(Utilities::MPI::min(least, geometry.comm()));
   }
 
@@ -187,19 +188,8 @@ namespace fvfsi
     // R_P = sum_f S_f n.(Sigma.F^T)_f + rho V (b - a(u)), the residual of Eq. 16.
     for (auto& r : residual)
       r = 0;
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-    {
-      const auto& face = geometry.faces[f];
-      if (face.kind == FaceKind::ghost_boundary)
-        continue;
-      const Tensor<1, dim> force = face.area * face_force_density(f);
-      for (unsigned int j = 0; j < dim; ++j)
-      {
-        residual[j].local_element(face.P) += force[j];
-        if (face.kind == FaceKind::interior)
-          residual[j].local_element(face.N) -= force[j];
-      }
-    }
+    for_each_face(geometry, [&](const unsigned int f, const FaceGeometry<dim>& face)
+                  { add_outflow(face, face.area * face_force_density(f), residual); });
     // The inertia rho V a with a = c0 v - c1 v^o + c2 v^oo and v = c0 u - c1 u^o + c2 u^oo
     // (Eqs 17-18; backward Euler on the first step).
     const auto [c0, c1, c2] = clock.bdf();
@@ -227,9 +217,9 @@ namespace fvfsi
   Tensor<1, dim> SolidSolver<dim>::patch_force(const unsigned int patch) const
   {
     Tensor<1, dim> force;
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-      if (geometry.faces[f].kind == FaceKind::boundary && geometry.faces[f].patch == patch)
-        force += geometry.faces[f].area * face_force_density(f);
+    for_each_patch_face(geometry, patch,
+                        [&](const unsigned int f, const FaceGeometry<dim>& face)
+                        { force += face.area * face_force_density(f); });
     return Utilities::MPI::sum(force, geometry.comm());
   }
 

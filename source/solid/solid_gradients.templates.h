@@ -152,11 +152,9 @@ namespace fvfsi
   template <int dim>
   void SolidSolver<dim>::find_constrained_vertices()
   {
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
+    for (const unsigned int f : geometry.all_boundary_faces())
     {
       const auto& face = geometry.faces[f];
-      if (face.N != invalid_cell)
-        continue;
       for (const unsigned int v : face.vertices)
         if (conditions.type(f) == Type::symmetry)
         {

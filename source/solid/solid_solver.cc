@@ -9,6 +9,7 @@
 #include "solid_gradients.templates.h"
 #include "solid_jacobian_free.templates.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -89,13 +90,12 @@ namespace fvfsi
     data.rank_tolerance = 1e-10;
     data.mirror_faces.assign(geometry.faces.size(), false);
     data.value_faces = data.normal_derivative_faces = data.mirror_faces;
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-      if (geometry.faces[f].N == invalid_cell)
-      {
-        data.mirror_faces[f] = conditions.type(f) == Type::symmetry;
-        data.value_faces[f] = conditions.type(f) == Type::fixed_displacement;
-        data.normal_derivative_faces[f] = takes_traction(conditions.type(f));
-      }
+    for (const unsigned int f : geometry.all_boundary_faces())
+    {
+      data.mirror_faces[f] = conditions.type(f) == Type::symmetry;
+      data.value_faces[f] = conditions.type(f) == Type::fixed_displacement;
+      data.normal_derivative_faces[f] = takes_traction(conditions.type(f));
+    }
     cell_hessian = std::make_unique<QuadraticFit<dim>>(geometry, data);
     const unsigned int n_undetermined =
       Utilities::MPI::sum(cell_hessian->n_undetermined(), geometry.comm());
@@ -128,17 +128,16 @@ namespace fvfsi
     // A_j: the orthogonal part of Eq. 19 with K = 2 mu + lambda (Eqs 26-27), Dirichlet faces
     // (fixed displacement; symmetry for the normal component, weight n_j^2) and the mass term.
     ScalarBoundaryConditions<dim> bc;
-    for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-      if (geometry.faces[f].N == invalid_cell)
-        bc.patch_type[geometry.faces[f].patch] =
-          takes_traction(conditions.type(f)) ? BoundaryType::neumann : BoundaryType::dirichlet;
+    for (const unsigned int f : geometry.all_boundary_faces())
+      bc.patch_type[geometry.faces[f].patch] =
+        takes_traction(conditions.type(f)) ? BoundaryType::neumann : BoundaryType::dirichlet;
     bc.value.assign(geometry.faces.size(), 0.0);
     CellVector unused_rhs = geometry.make_cell_vector();
     for (unsigned int j = 0; j < dim; ++j)
     {
       FaceVector gamma(geometry.faces.size(), lame.K());
-      for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-        if (geometry.faces[f].N == invalid_cell && conditions.type(f) == Type::symmetry)
+      for (const unsigned int f : geometry.all_boundary_faces())
+        if (conditions.type(f) == Type::symmetry)
           gamma[f] *= geometry.faces[f].n[j] * geometry.faces[f].n[j];
       matrix[j] = 0;
       laplacian.assemble(gamma, bc, matrix[j], unused_rhs);
@@ -414,8 +413,8 @@ namespace fvfsi
       {
         // The other variants do not use vertex values: reconstruct them (App. B) for the caller.
         FaceVector boundary_values(geometry.faces.size());
-        for (unsigned int f = 0; f < geometry.faces.size(); ++f)
-          boundary_values[f] = boundary_u[f][j];
+        std::transform(boundary_u.begin(), boundary_u.end(), boundary_values.begin(),
+                       [j](const Tensor<1, dim>& u_b) { return u_b[j]; });
         vertex_interpolation.interpolate(u.components[j], boundary_values, values);
         v = &values;
       }

@@ -69,6 +69,7 @@ const Case fsi = {"FSI",
                   "turek_hron_fsi3",
                   "fsi_history.txt",
                   {"Mesh/Generator arguments=12", "Solid mesh/Generator arguments=20: 2",
+                   "Fluid/Max pressure correctors=6", // as fsi3_coarse: a start from rest
                    "Time/Time step=0.002", "Coupling/Start time=0.01",
                    "Coupling/Reuse time steps=2", "Fluid scene/Output interval=5",
                    "Fluid scene/Progress interval=100"}};

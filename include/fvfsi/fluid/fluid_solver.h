@@ -247,6 +247,8 @@ namespace fvfsi
     void add_time_and_body_force_terms();
     void solve_momentum();
     void assemble_pressure_matrix();
+    /// Gamma_f of face f (c1, c2 the BDF coefficients) and its share of the pressure equation.
+    void add_pressure_face(unsigned int f, const FaceGeometry<dim>& face, double c1, double c2);
     /// Steady with Consistent pressure coupling: SIMPLEC's coefficients.
     bool simplec() const { return !prm.transient && prm.consistent_coupling; }
     /// a~_P = a_P - H1_P (SIMPLEC) or a_P, into a_tilde.
@@ -258,6 +260,8 @@ namespace fvfsi
     void correct_fluxes();
     void correct_velocity();
     void shift_time_levels();
+    /// S_f and r_f of the current geometry into S_old, r_f_old.
+    void record_face_geometry();
     /// F_f^mesh of the current time step from the swept volumes.
     void compute_mesh_fluxes();
     /// r1_f = (V^o / V)_f and r2_f = (V^oo / V)_f, interpolated linearly (1 on a fixed mesh).

@@ -29,7 +29,20 @@ namespace fvfsi
 
     /// Add a symmetric face coupling a (a > 0): a (x_P - x_N) in row P, a (x_N - x_P) in row N,
     /// the orthogonal part of a diffusion term with a = Gamma_f S_f / d_fn (Eqs 19, 27).
-    void add_face_diffusion(unsigned int f, double a);
+    void add_face_diffusion(unsigned int f, double a) { add_face_flux(f, a, -a); }
+    /// Add an implicit face flux q_f = a_P x_P + a_N x_N leaving P (a face between two cells):
+    /// +q_f in row P, -q_f in row N (convection, fv/terms.h).
+    void add_face_flux(unsigned int f, double a_P, double a_N)
+    {
+      const auto& face = geometry.faces[f];
+      diagonal[face.P] += a_P;
+      upper[f] += a_N;
+      if (face.kind == FaceKind::interior)
+      {
+        diagonal[face.N] -= a_N;
+        lower[f] -= a_P;
+      }
+    }
 
     /// Write the coefficients into `matrix` (sparsity from Laplacian::reinit_matrix): the first
     /// time row by row, later straight into its rows (the layout is kept; reinit() forgets it).

@@ -150,6 +150,9 @@ namespace fvfsi
     }
     /// Local face indices of cell c (owned cells: all faces; ghost cells: their boundary faces).
     const std::vector<unsigned int>& cell_faces(unsigned int c) const { return faces_of_cell[c]; }
+    /// The number of faces of owned cells (kinds interior, processor, boundary): they come first
+    /// in `faces`, the ghost_boundary faces after them.
+    unsigned int n_owned_cell_faces() const { return n_faces_of_owned_cells; }
     /// The faces of kind `boundary` (domain-boundary faces of owned cells).
     const std::vector<unsigned int>& boundary_faces() const { return boundary_face_list; }
     /// The faces of kinds `boundary` and `ghost_boundary`.
@@ -179,6 +182,7 @@ namespace fvfsi
       cell_vertex_indices;
     std::vector<std::vector<unsigned int>> faces_of_cell;
     std::vector<unsigned int> boundary_face_list, all_boundary_face_list;
+    unsigned int n_faces_of_owned_cells = 0;
     BoundaryFaceExchange boundary_exchange;
     /// Per cell and face: the face's vertices, counter-clockwise about the outward normal.
     std::vector<std::array<std::array<unsigned int, dealii::GeometryInfo<dim>::vertices_per_face>,
