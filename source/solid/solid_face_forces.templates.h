@@ -216,11 +216,9 @@ namespace fvfsi
   template <int dim>
   Tensor<1, dim> SolidSolver<dim>::patch_force(const unsigned int patch) const
   {
-    Tensor<1, dim> force;
-    for_each_patch_face(geometry, patch,
-                        [&](const unsigned int f, const FaceGeometry<dim>& face)
-                        { force += face.area * face_force_density(f); });
-    return Utilities::MPI::sum(force, geometry.comm());
+    return patch_sum(geometry, patch,
+                     [this](const unsigned int f, const FaceGeometry<dim>& face)
+                     { return face.area * face_force_density(f); });
   }
 
 } // namespace fvfsi

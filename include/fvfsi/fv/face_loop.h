@@ -14,7 +14,7 @@
 // Solvers loop over faces with these helpers and never test FaceKind themselves:
 //
 //   for_each_face(geometry, [&](f, face) { ... });                 // interior, processor, boundary
-//   for_each_face(geometry, interior_term, boundary_term);         // the two sides of a term
+//   for_each_face(geometry, between, boundary);                    // the two sides of a term
 //   add_outflow(face, F[f], net);                                  // sum_f F_f: +F to P, -F to N
 //   face_value(face, [&](c) { return u[c]; })                      // u_f (u_P at a boundary)
 
@@ -34,7 +34,7 @@ namespace fvfsi
   /// faces: the faces of its owned cells, which FVGeometry stores first), for a range-for:
   ///   for (const unsigned int f : evaluated_faces(geometry)) ...
   /// (for_each_face below is the same loop with a lambda; a loop body too large for the compiler
-  /// to inline as one, as the Rhie-Chow flux's, runs twice as fast written this way.)
+  /// to inline as one, as the Rhie-Chow flux's, runs 1.8 times as fast written this way.)
   template <int dim>
   inline dealii::std_cxx20::ranges::iota_view<unsigned int, unsigned int>
   evaluated_faces(const FVGeometry<dim>& geometry)
@@ -92,6 +92,18 @@ namespace fvfsi
     for (const unsigned int f : geometry.boundary_faces())
       if (geometry.faces[f].patch == patch)
         fn(f, geometry.faces[f]);
+  }
+
+  /// sum_f fn(f, face) over the faces of patch `patch` on every rank (collective): a patch's
+  /// force, sum_f S_f t_f, or its area.
+  template <int dim, typename Fn>
+  auto patch_sum(const FVGeometry<dim>& geometry, const unsigned int patch, Fn&& fn)
+  {
+    decltype(fn(0u, geometry.faces[0])) sum{};
+    for_each_patch_face(geometry, patch,
+                        [&](const unsigned int f, const FaceGeometry<dim>& face)
+                        { sum += fn(f, face); });
+    return dealii::Utilities::MPI::sum(sum, geometry.comm());
   }
 
   /// The entry of owned cell c of a cell sum: a CellVector's local element or a vector's entry
