@@ -12,8 +12,8 @@
 //     fvm::upwind_convection(momentum, f, face, phi);    // + sum_f phi_f u_f
 //   }, boundary_terms);
 //
-// The owner / neighbour rule (a face adds to N only where this rank owns N) lives in FaceMatrix
-// and face_loop.h alone. The time derivative (BDF coefficients of the clock, TimeControl::bdf())
+// The owner / neighbour rule (a face adds to N only where this rank owns N) lives in fv/ alone:
+// face_loop.h for cell sums, FaceMatrix and Laplacian::assemble for matrix rows. The time derivative (BDF coefficients of the clock, TimeControl::bdf())
 // and cell sources are per cell and are added by the solvers' cell loops.
 
 #include <fvfsi/fv/face_loop.h>
