@@ -14,26 +14,27 @@ namespace fvfsi
                                            const unsigned int n_values,
                                            const ConditionalOStream& pcout, TimerOutput* timer)
       : prm(parameters), pcout(pcout), timer(timer), method(CouplingMethod::create(parameters)),
-        d(n_values), d_old(n_values), d_older(n_values)
+        d(n_values)
   {
+    d_levels.start(d);
   }
 
   void PartitionedCoupling::begin_time_step(const TimeControl& clock)
   {
-    d = d_old;
+    d = d_levels.o;
     if (clock.step() > 2)
     {
       // d^n + omega (d^n - d^(n-1)), omega = dt / dt_old: 2 d^n - d^(n-1) for equal steps; the
       // clock's weights, which the fluid's extrapolated state and the error estimate use too.
-      const auto [w_n, w_n_minus_1] = clock.extrapolation_weights();
-      d.sadd(w_n, w_n_minus_1, d_older);
+      const auto w = clock.extrapolation_weights();
+      for (unsigned int i = 0; i < d.size(); ++i)
+        d[i] = d_levels.extrapolated(w, i);
     }
   }
 
   void PartitionedCoupling::end_time_step()
   {
-    d_older = d_old;
-    d_old = d;
+    d_levels.shift(d);
   }
 
   unsigned int PartitionedCoupling::converge(const InterfaceOperator& fluid_then_solid,
@@ -88,7 +89,7 @@ namespace fvfsi
 
   void PartitionedCoupling::checkpoint(GlobalArchive& archive)
   {
-    archive& d& d_old& d_older;
+    archive& d& d_levels.o& d_levels.oo;
     method->checkpoint(archive);
   }
 } // namespace fvfsi

@@ -101,13 +101,13 @@ namespace fvfsi
     {
       const double V = geometry.cell_volume[c];
       const double pseudo = momentum.diagonal[c] / V * (1 - alpha) / alpha;
-      c0_cell[c] = prm.transient ? (c1 * V_old[c] - c2 * V_old2[c]) / V + pseudo : pseudo;
-      const double c1V = prm.transient ? c1 * V_old[c] : c0_cell[c] * V;
+      c0_cell[c] = prm.transient ? (c1 * V_levels.o[c] - c2 * V_levels.oo[c]) / V + pseudo : pseudo;
+      const double c1V = prm.transient ? c1 * V_levels.o[c] : c0_cell[c] * V;
       momentum.diagonal[c] += c0_cell[c] * V;
       for (unsigned int j = 0; j < dim; ++j)
       {
-        B_time[j][c] = c1V * u_old.components[j].local_element(c) -
-                       c2 * V_old2[c] * u_old2.components[j].local_element(c);
+        B_time[j][c] = c1V * u_levels.o.components[j].local_element(c) -
+                       c2 * V_levels.oo[c] * u_levels.oo.components[j].local_element(c);
         if (prm.transient && alpha < 1)
           B_time[j][c] += pseudo * V * u.components[j].local_element(c);
         B_rest[j].local_element(c) += V * body_force_value[j][c];
@@ -267,8 +267,8 @@ namespace fvfsi
         m = face.centre - geometry.centroid[P];
         for (unsigned int j = 0; j < dim; ++j)
           grad[j] = grad_u[j][P];
-        u_o = u_old[P];
-        u_oo = u_old2[P];
+        u_o = u_levels.o[P];
+        u_oo = u_levels.oo[P];
       }
       else
       {
@@ -277,15 +277,15 @@ namespace fvfsi
         m = face.centre - face.interpolate(geometry.centroid[P], geometry.centroid[N]);
         for (unsigned int j = 0; j < dim; ++j)
           grad[j] = face.interpolate(grad_u[j][P], grad_u[j][N]);
-        u_o = face.interpolate(u_old[P], u_old[N]);
-        u_oo = face.interpolate(u_old2[P], u_old2[N]);
+        u_o = face.interpolate(u_levels.o[P], u_levels.o[N]);
+        u_oo = face.interpolate(u_levels.oo[P], u_levels.oo[N]);
       }
       for (unsigned int j = 0; j < dim; ++j)
         h_by_a[j] += m * grad[j];
       // Old fluxes carried to the new face: F^o + u^o_f . (S_f - S_f^o) (exactly F^o on a fixed
       // mesh), weighted by the volume ratios r1_f, r2_f.
-      const double F_o = F_old[f] + u_o * (face.S - S_old[f]);
-      const double F_oo = F_old2[f] + u_oo * (face.S - S_old2[f]);
+      const double F_o = F_levels.o[f] + u_o * (face.S - S_levels.o[f]);
+      const double F_oo = F_levels.oo[f] + u_oo * (face.S - S_levels.oo[f]);
       const auto r = volume_ratios(f);
       // Steady: the old flux is the last pseudo step's; transient outer loops relaxed by
       // alpha < 1: also the pseudo time term's, the outer loop's first flux F_outer_start.

@@ -35,8 +35,8 @@ namespace fvfsi
     evaluate_body_force();
     setup_boundary_conditions(mesh_parameters);
 
-    for (auto* field : {&u, &u_old, &u_old2, &h})
-      *field = CellVectorField<dim>(geometry);
+    u = h = CellVectorField<dim>(geometry);
+    u_levels.start(u);
     for (unsigned int j = 0; j < dim; ++j)
     {
       grad_u[j] = CellGradient<dim>(geometry);
@@ -54,15 +54,16 @@ namespace fvfsi
     grad_p_before = CellGradient<dim>(geometry);
     pressure_rhs = geometry.make_cell_vector();
     const unsigned int n_faces = geometry.faces.size();
-    for (auto* field : {&F, &F_old, &F_old2, &F_mesh, &F_star, &gamma_p, &gamma_c, &a_star_f,
-                        &boundary_p, &swept, &swept_old, &F_before_corrector, &F_outer_start})
+    for (auto* field : {&F, &F_mesh, &F_star, &gamma_p, &gamma_c, &a_star_f, &boundary_p, &swept,
+                        &swept_old, &F_before_corrector, &F_outer_start})
       field->assign(n_faces, 0.0);
-    V_old = V_old2 = geometry.cell_volume;
-    S_old.resize(n_faces);
-    r_f_old.resize(n_faces);
+    F_levels.start(F);
+    V_levels.start(geometry.cell_volume);
+    S_levels.o.resize(n_faces);
+    r_f_levels.o.resize(n_faces);
     record_face_geometry();
-    S_old2 = S_old;
-    r_f_old2 = r_f_old;
+    S_levels.start(S_levels.o);
+    r_f_levels.start(r_f_levels.o);
     boundary_u.assign(n_faces, Tensor<1, dim>());
     c0_cell.assign(geometry.n_owned_cells(), 0.0);
     c0_face.assign(n_faces, 0.0);
@@ -146,10 +147,8 @@ namespace fvfsi
                                               ? boundary_u[f]
                                               : face.interpolate(u[face.P], u[face.N]));
                          });
-    F_old = F;
-    F_old2 = F;
-    u_old = u;
-    u_old2 = u;
+    F_levels.start(F);
+    u_levels.start(u);
   }
 
   template <int dim>
@@ -172,8 +171,7 @@ namespace fvfsi
         {
           // The wall moves with the mesh: the tangential part of its face centre's velocity, the
           // normal part from the swept volume (so that S_f . u_b = F_f^mesh exactly).
-          const auto [c0, c1, c2] = time_coefficients();
-          const Tensor<1, dim> v_f = c0 * face.centre - c1 * r_f_old[f] + c2 * r_f_old2[f];
+          const Tensor<1, dim> v_f = r_f_levels.derivative(time_coefficients(), face.centre, f);
           boundary_u[f] = v_f - (v_f * face.n) * face.n + (F_mesh[f] / face.area) * face.n;
           break;
         }
@@ -237,19 +235,15 @@ namespace fvfsi
   template <int dim>
   void FluidSolver<dim>::shift_time_levels()
   {
-    u_old2 = u_old;
-    u_old = u;
-    u_old.update_ghost_values();
-    u_old2.update_ghost_values();
-    F_old2 = F_old;
-    F_old = F;
-    V_old2 = V_old;
-    V_old = geometry.cell_volume;
+    u_levels.shift(u);
+    u_levels.for_each([](auto& level) { level.update_ghost_values(); });
+    F_levels.shift(F);
+    V_levels.shift(geometry.cell_volume);
     swept_old = swept;
     std::fill(swept.begin(), swept.end(), 0.0);
-    S_old2 = S_old;
-    r_f_old2 = r_f_old;
-    record_face_geometry();
+    S_levels.shift();
+    r_f_levels.shift();
+    record_face_geometry(); // the new S^o, r_f^o
     update_volume_ratios();
   }
 
@@ -259,8 +253,8 @@ namespace fvfsi
     for_each_stored_face(geometry,
                          [this](const unsigned int f, const FaceGeometry<dim>& face)
                          {
-                           S_old[f] = face.S;
-                           r_f_old[f] = face.centre;
+                           S_levels.o[f] = face.S;
+                           r_f_levels.o[f] = face.centre;
                          });
   }
 
@@ -292,8 +286,10 @@ namespace fvfsi
   {
     // Once per change of the geometry or the time levels, not per face and PISO corrector.
     face_volume_ratio.resize(geometry.faces.size());
-    const auto r1 = [this](const unsigned int c) { return V_old[c] / geometry.cell_volume[c]; };
-    const auto r2 = [this](const unsigned int c) { return V_old2[c] / geometry.cell_volume[c]; };
+    const auto r1 = [this](const unsigned int c)
+    { return V_levels.o[c] / geometry.cell_volume[c]; };
+    const auto r2 = [this](const unsigned int c)
+    { return V_levels.oo[c] / geometry.cell_volume[c]; };
     for_each_stored_face(geometry,
                          [&](const unsigned int f, const FaceGeometry<dim>& face) {
                            face_volume_ratio[f] = {{face_value(face, r1), face_value(face, r2)}};
@@ -351,9 +347,9 @@ namespace fvfsi
       // to the right time: (2, -1) for equal steps.
       const auto [w1, w2] = clock.extrapolation_weights();
       for (unsigned int f = 0; f < F.size(); ++f)
-        F[f] = w1 * F_old[f] + w2 * F_old2[f];
+        F[f] = F_levels.extrapolated({w1, w2}, f);
       for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
-        u.set(c, w1 * u_old[c] + w2 * u_old2[c]);
+        u.set(c, u_levels.extrapolated({w1, w2}, c));
       u.update_ghost_values();
     }
     u_start = u;
@@ -408,8 +404,8 @@ namespace fvfsi
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
     {
       if (w2 != 0)
-        max_e = std::max(max_e, (u[c] - w1 * u_old[c] - w2 * u_old2[c]).norm());
-      max_du = std::max(max_du, (u[c] - u_old[c]).norm());
+        max_e = std::max(max_e, (u[c] - w1 * u_levels.o[c] - w2 * u_levels.oo[c]).norm());
+      max_du = std::max(max_du, (u[c] - u_levels.o[c]).norm());
       max_u = std::max(max_u, u[c].norm());
       max_p = std::max(max_p, p.local_element(c));
       min_p = std::min(min_p, p.local_element(c));
@@ -430,27 +426,27 @@ namespace fvfsi
   {
     // Between two time steps u = u^n, F = F^n and V = V^n (end_time_step() shifted the levels);
     // the gradients and boundary values are those the next step's first iteration starts from.
-    for (auto* field : {&u, &u_old, &u_old2, &grad_p})
+    for (auto* field : {&u, &u_levels.o, &u_levels.oo, &grad_p})
       for (auto& component : field->components)
         archive.cells(component);
     for (auto& g : grad_u)
       for (auto& component : g.components)
         archive.cells(component);
     archive.cells(p);
-    archive.cells(V_old);
-    archive.cells(V_old2);
-    for (auto* flux : {&F, &F_old, &F_old2, &swept_old})
+    archive.cells(V_levels.o);
+    archive.cells(V_levels.oo);
+    for (auto* flux : {&F, &F_levels.o, &F_levels.oo, &swept_old})
       archive.faces(*flux, Parity::odd);
-    archive.faces(S_old, Parity::odd);
-    archive.faces(S_old2, Parity::odd);
-    archive.faces(r_f_old, Parity::even);
-    archive.faces(r_f_old2, Parity::even);
+    archive.faces(S_levels.o, Parity::odd);
+    archive.faces(S_levels.oo, Parity::odd);
+    archive.faces(r_f_levels.o, Parity::even);
+    archive.faces(r_f_levels.oo, Parity::even);
     archive.faces(boundary_u, Parity::even);
     archive.faces(boundary_p, Parity::even);
     if (archive.loading())
     {
       std::fill(swept.begin(), swept.end(), 0.0);
-      for (auto* field : {&u, &u_old, &u_old2, &grad_p})
+      for (auto* field : {&u, &u_levels.o, &u_levels.oo, &grad_p})
         field->update_ghost_values();
       for (auto& g : grad_u)
         g.update_ghost_values();

@@ -192,24 +192,16 @@ namespace fvfsi
                   { add_outflow(face, face.area * face_force_density(f), residual); });
     // The inertia rho V a with a = c0 v - c1 v^o + c2 v^oo and v = c0 u - c1 u^o + c2 u^oo
     // (Eqs 17-18; backward Euler on the first step).
-    const auto [c0, c1, c2] = clock.bdf();
+    const BdfCoefficients bdf = clock.bdf();
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
     {
+      Tensor<1, dim> acceleration;
+      if (parameters.transient)
+        acceleration = v_levels.derivative(bdf, u_levels.derivative(bdf, u[c], c), c);
       const double rho_V = parameters.rho * geometry.cell_volume[c];
       for (unsigned int j = 0; j < dim; ++j)
-      {
-        double acceleration = 0;
-        if (parameters.transient)
-        {
-          const double v = c0 * u.components[j].local_element(c) -
-                           c1 * u_old.components[j].local_element(c) +
-                           c2 * u_old2.components[j].local_element(c);
-          acceleration = c0 * v - c1 * v_old.components[j].local_element(c) +
-                         c2 * v_old2.components[j].local_element(c);
-        }
         residual[j].local_element(c) +=
-          rho_V * (load_factor * body_force_value[j][c] - acceleration);
-      }
+          rho_V * (load_factor * body_force_value[j][c] - acceleration[j]);
     }
   }
 

@@ -43,8 +43,9 @@ namespace fvfsi
     if (parameters.variant == Variant::present && parameters.hessian_correction)
       setup_hessian_correction();
 
-    for (auto* field : {&u, &u_old, &u_old2, &v_old, &v_old2})
-      *field = CellVectorField<dim>(geometry);
+    v = u = CellVectorField<dim>(geometry);
+    u_levels.start(u);
+    v_levels.start(v);
     for (auto& g : grad_u)
       g = CellGradient<dim>(geometry);
     for (auto& v : vertex_u)
@@ -168,18 +169,12 @@ namespace fvfsi
   {
     // v^[m-1] from the step just finished (BDF2 or, after the first step, backward Euler):
     // v = c0 u - c1 u^o + c2 u^oo.
-    const auto [c0, c1, c2] = clock.bdf();
-    for (unsigned int j = 0; j < dim; ++j)
-      for (unsigned int c = 0; c < geometry.n_relevant_cells(); ++c)
-      {
-        const double u_c = u.components[j].local_element(c),
-                     u1 = u_old.components[j].local_element(c),
-                     u2 = u_old2.components[j].local_element(c);
-        v_old2.components[j].local_element(c) = v_old.components[j].local_element(c);
-        v_old.components[j].local_element(c) = c0 * u_c - c1 * u1 + c2 * u2;
-        u_old2.components[j].local_element(c) = u1;
-        u_old.components[j].local_element(c) = u_c;
-      }
+    // On the owned and the ghost cells alike (the ghosts' old levels are read by the faces).
+    const BdfCoefficients bdf = clock.bdf();
+    for (unsigned int c = 0; c < geometry.n_relevant_cells(); ++c)
+      v.set(c, u_levels.derivative(bdf, u[c], c));
+    v_levels.shift(v);
+    u_levels.shift(u);
   }
 
   template <int dim>
@@ -445,7 +440,7 @@ namespace fvfsi
     // Everything the next step's first outer iteration reads: u and the levels of u and v; the
     // boundary values, vertex values and gradients of u (iterated, not functions of u alone); the
     // Hessians and their terms (present variant with the Hessian correction).
-    for (auto* field : {&u, &u_old, &u_old2, &v_old, &v_old2})
+    for (auto* field : {&u, &u_levels.o, &u_levels.oo, &v_levels.o, &v_levels.oo})
       for (auto& component : field->components)
         archive.cells(component);
     for (unsigned int j = 0; j < dim; ++j)
@@ -469,7 +464,7 @@ namespace fvfsi
     }
     if (archive.loading())
     {
-      for (auto* field : {&u, &u_old, &u_old2, &v_old, &v_old2})
+      for (auto* field : {&u, &u_levels.o, &u_levels.oo, &v_levels.o, &v_levels.oo})
         field->update_ghost_values();
       for (unsigned int j = 0; j < dim; ++j)
       {

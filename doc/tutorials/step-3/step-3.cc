@@ -41,6 +41,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include "../tutorial.h"
+#include <fvfsi/base/time_levels.h>
 #include <fvfsi/fluid/fluid_parameters.h>
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/fv/boundary_conditions.h>
@@ -147,9 +148,13 @@ private:
   TrilinosWrappers::SparseMatrix momentum_matrix, pressure_matrix;
   std::unique_ptr<LinearSolver> momentum_solver, pressure_solver;
 
-  CellVectorField<dim> u, u_old, u_old2; // u^n, u^(n-1), u^(n-2)
+  // The present u and F and their old levels u^o, u^oo (u_levels.o, u_levels.oo): the library's
+  // TimeLevels, which every solver of fvfsi keeps its history in.
+  CellVectorField<dim> u;
+  TimeLevels<CellVectorField<dim>> u_levels;
   CellVector p;
-  FaceVector F, F_old, F_old2;
+  FaceVector F;
+  TimeLevels<FaceVector> F_levels;
   unsigned int step = 0;
   void time_coefficients(double& c0, double& c1, double& c2) const;
 
@@ -239,8 +244,8 @@ void CylinderFlow::setup_system()
   momentum_solver = std::make_unique<LinearSolver>(momentum_parameters);
   pressure_solver = std::make_unique<LinearSolver>(pressure_parameters);
 
-  for (auto* field : {&u, &u_old, &u_old2, &h})
-    *field = CellVectorField<dim>(*fv);
+  u = h = CellVectorField<dim>(*fv);
+  u_levels.start(u);
   for (unsigned int j = 0; j < dim; ++j)
   {
     grad_u[j] = CellGradient<dim>(*fv);
@@ -255,7 +260,7 @@ void CylinderFlow::setup_system()
   a_star = fv->make_cell_vector();
   c0_cell_ghosted = fv->make_cell_vector();
   pressure_rhs = fv->make_cell_vector();
-  for (auto* field : {&F, &F_old, &F_old2, &F_star, &gamma_p, &a_star_f, &c0_face, &boundary_p})
+  for (auto* field : {&F, &F_star, &gamma_p, &a_star_f, &c0_face, &boundary_p})
     field->assign(n_faces, 0.0);
   boundary_u.assign(n_faces, Tensor<1, dim>());
   c0_cell.assign(fv->n_owned_cells(), 0.0);
@@ -267,8 +272,7 @@ void CylinderFlow::setup_system()
   for (unsigned int f = 0; f < n_faces; ++f)
     if (fv->faces[f].N == invalid_cell)
       F[f] = fv->faces[f].S * boundary_u[f];
-  F_old = F;
-  F_old2 = F;
+  F_levels.start(F);
 }
 
 // @sect4{Boundary values and gradients}
@@ -355,9 +359,9 @@ void CylinderFlow::update_pressure_gradient()
 //   SIMPLE's implicit under-relaxation of the momentum equation with factor alpha, written as a
 //   time step (each cell gets its own "Courant number" of about alpha / (1 - alpha)). The time
 //   source B_time = V_P c0_P u_P^old. A transient run (dt > 0) uses the same code with BDF2
-//   (Eq. 17): du/dt ~ c0 u - c1 u^old + c2 u^old2 with c0 = 3/(2 dt), c1 = 2/dt, c2 = 1/(2 dt),
+//   (Eq. 17): du/dt ~ c0 u - c1 u^o + c2 u^oo with c0 = 3/(2 dt), c1 = 2/dt, c2 = 1/(2 dt),
 //   backward Euler (c0 = c1 = 1/dt, c2 = 0) on the first step, the same in all cells, and
-//   B_time = V_P (c1 u^old - c2 u^old2).
+//   B_time = V_P (c1 u^o - c2 u^oo).
 void CylinderFlow::assemble_momentum()
 {
   momentum->zero();
@@ -419,8 +423,8 @@ void CylinderFlow::assemble_momentum()
     const double c1_P = dt > 0 ? c1 : c0_cell[c];
     momentum->diagonal[c] += c0_cell[c] * V;
     for (unsigned int j = 0; j < dim; ++j)
-      B_time[j][c] = V * (c1_P * u_old.components[j].local_element(c) -
-                          c2 * u_old2.components[j].local_element(c));
+      B_time[j][c] = V * (c1_P * u_levels.o.components[j].local_element(c) -
+                          c2 * u_levels.oo.components[j].local_element(c));
   }
 }
 
@@ -498,7 +502,7 @@ void CylinderFlow::solve_momentum()
 // with dt or the relaxation factor: with alpha = 0.95 and 0.5 the consistent flux gives the same
 // forces, the classic one (this class with consistent = false) forces that differ by up to 5e-4
 // (see the table of run()). The classic flux is
-//   F_f = S_f . ((h + c0 u^old) / a)_f - (1 / a)_f S_f (n . grad p)_f;
+//   F_f = S_f . ((h + c0 u^o) / a)_f - (1 / a)_f S_f (n . grad p)_f;
 // at a steady state (h + c0 u) / a = u + (grad p) / a in each cell, so its pressure term,
 // (1 / a)_f S_f . [(grad p)_interpolated - n (n . grad p)_f], is weighted by 1 / a = alpha / a*.
 // Interpolating h / a* (a velocity) rather than h keeps F*_f second order where a*_P jumps
@@ -583,13 +587,13 @@ void CylinderFlow::compute_predicted_fluxes()
     const unsigned int P = face.P, N = face.N;
     Tensor<1, dim> h_by_a, m; // (h / a*)_f; from the interpolation point to r_f
     std::array<Tensor<1, dim>, dim> grad;
-    if (!consistent) // classic: F*_f = S_f . ((h + c0 u^old) / a)_f
+    if (!consistent) // classic: F*_f = S_f . ((h + c0 u^o) / a)_f
     {
       const auto h_by_a_cell = [&](const unsigned int c)
       {
         Tensor<1, dim> value = h[c];
         for (unsigned int j = 0; j < dim; ++j)
-          value[j] += c0_cell_ghosted.local_element(c) * u_old.components[j].local_element(c);
+          value[j] += c0_cell_ghosted.local_element(c) * u_levels.o.components[j].local_element(c);
         return value / a.local_element(c);
       };
       h_by_a =
@@ -623,7 +627,8 @@ void CylinderFlow::compute_predicted_fluxes()
     double c0, c1, c2;
     time_coefficients(c0, c1, c2);
     const double c1_f = dt > 0 ? c1 : c0_face[f];
-    F_star[f] = gamma_p[f] * (c1_f * F_old[f] - c2 * F_old2[f] + a_star_f[f] * (face.S * h_by_a));
+    F_star[f] =
+      gamma_p[f] * (c1_f * F_levels.o[f] - c2 * F_levels.oo[f] + a_star_f[f] * (face.S * h_by_a));
   }
 }
 
@@ -688,17 +693,14 @@ void CylinderFlow::correct_fluxes_and_velocity()
 
 // @sect4{CylinderFlow::solve_time_step}
 // One PISO step, in the order of the header comment. Returns the relative change
-// max|u - u_old| / max|u| of the step (max over cells of the Euclidean norm).
+// max|u - u^o| / max|u| of the step (max over cells of the Euclidean norm).
 double CylinderFlow::solve_time_step()
 {
   if (step > 0)
   {
-    u_old2 = u_old;
-    u_old = u;
-    u_old.update_ghost_values();
-    u_old2.update_ghost_values();
-    F_old2 = F_old;
-    F_old = F;
+    u_levels.shift(u); // u^oo <- u^o <- u
+    u_levels.for_each([](auto& level) { level.update_ghost_values(); });
+    F_levels.shift(F);
   }
   ++step;
   update_velocity_boundary_values();
@@ -720,7 +722,7 @@ double CylinderFlow::solve_time_step()
   double max_du = 0, max_u = 0;
   for (unsigned int c = 0; c < fv->n_owned_cells(); ++c)
   {
-    max_du = std::max(max_du, (u[c] - u_old[c]).norm());
+    max_du = std::max(max_du, (u[c] - u_levels.o[c]).norm());
     max_u = std::max(max_u, u[c].norm());
   }
   max_du = Utilities::MPI::max(max_du, mpi_communicator);

@@ -54,6 +54,7 @@
 #include <fvfsi/ale/mesh_motion.h>
 #include <fvfsi/app/parameters.h>
 #include <fvfsi/base/time_control.h>
+#include <fvfsi/base/time_levels.h>
 #include <fvfsi/coupling/coupling_method.h>
 #include <fvfsi/coupling/face_interpolation.h>
 #include <fvfsi/coupling/interface_zone.h>
@@ -243,8 +244,10 @@ private:
   std::unique_ptr<CouplingMethod> iqn_ils;
 
   std::vector<Point<dim>> vertices_old; // fluid vertex positions at t^n
-  // The interface displacement at the fluid interface points at t^(n+1), t^n, t^(n-1) [m].
-  InterfaceVector d, d_old, d_older;
+  // The interface displacement at the fluid interface points at t^(n+1) [m], and its old levels
+  // at t^n and t^(n-1) (d_levels.o, d_levels.oo: the library's TimeLevels, as every solver's).
+  InterfaceVector d;
+  TimeLevels<InterfaceVector> d_levels;
   double omega = 0;           // Aitken: the relaxation factor of the last iteration
   InterfaceVector r_previous; // Aitken: the residual of the last iteration
   unsigned int traced_step = 0;
@@ -313,8 +316,7 @@ void PressureColumn::make_interface()
   if (c.method == "IQN-ILS")
     iqn_ils = CouplingMethod::create(c);
   d.reinit(dim * fluid_zone->n_points());
-  d_old = d;
-  d_older = d;
+  d_levels.start(d);
 }
 
 // @sect4{PressureColumn::run}
@@ -372,16 +374,19 @@ unsigned int PressureColumn::solve_time_step()
   fluid->begin_time_step();
   solid->begin_time_step();
   vertices_old = fluid_fv->vertices();
-  d = d_old;
+  // Line 2, the predictor: d = d^n, and from the third step on the linear extrapolation
+  // d = 2 d^n - d^(n-1) (with the clock's weights, which follow a change of dt).
+  d = d_levels.o;
+  const auto w = clock.extrapolation_weights();
   if (clock.step() > 2)
-    d.sadd(2, -1, d_older); // d = 2 d^n - d^(n-1)
+    for (unsigned int i = 0; i < d.size(); ++i)
+      d[i] = d_levels.extrapolated(w, i);
 
   const unsigned int k = converge_interface();
 
   fluid->end_time_step();
   solid->end_time_step();
-  d_older = d_old;
-  d_old = d;
+  d_levels.shift(d);
   return k;
 }
 

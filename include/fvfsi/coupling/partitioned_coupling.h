@@ -21,6 +21,7 @@
 #include <deal.II/base/timer.h>
 
 #include <fvfsi/base/time_control.h>
+#include <fvfsi/base/time_levels.h>
 #include <fvfsi/coupling/coupling_method.h>
 
 #include <functional>
@@ -70,7 +71,9 @@ namespace fvfsi
     dealii::ConditionalOStream pcout;
     dealii::TimerOutput* timer;
     std::unique_ptr<CouplingMethod> method;
-    /// Interface displacement at the fluid interface vertices at t^(n+1), t^n, t^(n-1) [m].
-    InterfaceVector d, d_old, d_older;
+    /// Interface displacement at the fluid interface vertices at t^(n+1) [m], and its old levels
+    /// at t^n, t^(n-1) (d_levels.o, d_levels.oo).
+    InterfaceVector d;
+    TimeLevels<InterfaceVector> d_levels;
   };
 } // namespace fvfsi

@@ -76,6 +76,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <fvfsi/base/time_control.h>
+#include <fvfsi/base/time_levels.h>
 #include <fvfsi/fluid/fluid_parameters.h>
 #include <fvfsi/fv/boundary_conditions.h>
 #include <fvfsi/fv/cell_fields.h>
@@ -260,7 +261,7 @@ namespace fvfsi
     void correct_fluxes();
     void correct_velocity();
     void shift_time_levels();
-    /// S_f and r_f of the current geometry into S_old, r_f_old.
+    /// S_f and r_f of the current geometry into S^o, r_f^o.
     void record_face_geometry();
     /// F_f^mesh of the current time step from the swept volumes.
     void compute_mesh_fluxes();
@@ -314,14 +315,18 @@ namespace fvfsi
     LinearSolver momentum_solver, pressure_solver;
 
     // State.
-    CellVectorField<dim> u, u_old, u_old2;
+    // State: the present level and the old ones (u^o = u_levels.o, u^oo = u_levels.oo).
+    CellVectorField<dim> u;
+    TimeLevels<CellVectorField<dim>> u_levels;
     CellVector p;
-    FaceVector F, F_old, F_old2, F_mesh;
-    // Mesh motion: cell volumes, swept volumes, face area vectors and centres of the old levels.
-    std::vector<double> V_old, V_old2;
+    FaceVector F, F_mesh;
+    TimeLevels<FaceVector> F_levels;
+    // Mesh motion: the old levels of the cell volumes, face area vectors and face centres, and
+    // the swept volumes of this step and the last.
+    TimeLevels<std::vector<double>> V_levels;
+    TimeLevels<std::vector<dealii::Tensor<1, dim>>> S_levels;
+    TimeLevels<std::vector<dealii::Point<dim>>> r_f_levels;
     FaceVector swept, swept_old;
-    std::vector<dealii::Tensor<1, dim>> S_old, S_old2;
-    std::vector<dealii::Point<dim>> r_f_old, r_f_old2;
     unsigned int pseudo_step = 0; ///< steady: pseudo time steps so far
     /// Steady: alpha in use (Momentum relaxation, lowered by solve_steady() where the pseudo
     /// steps stop making progress; the steady solution does not depend on it).

@@ -35,6 +35,7 @@
 #include <deal.II/lac/la_parallel_block_vector.h>
 
 #include <fvfsi/base/time_control.h>
+#include <fvfsi/base/time_levels.h>
 #include <fvfsi/fv/boundary_conditions.h>
 #include <fvfsi/fv/cell_fields.h>
 #include <fvfsi/fv/gradients.h>
@@ -256,8 +257,10 @@ namespace fvfsi
     /// The outer iteration's R(u) and du per component, allocated once.
     std::array<CellVector, dim> residual, du;
 
-    // State: u and its history for BDF2 (u^[m-1], u^[m-2], v^[m-1], v^[m-2]).
-    CellVectorField<dim> u, u_old, u_old2, v_old, v_old2;
+    // State: u [m] and the old levels BDF2 reads (u^o, u^oo; v^o, v^oo, the velocities
+    // v = c0 u - c1 u^o + c2 u^oo [m/s] of the two steps before; v: the last one computed).
+    CellVectorField<dim> u, v;
+    TimeLevels<CellVectorField<dim>> u_levels, v_levels;
 
     // Derived from u in update_gradients().
     std::array<CellGradient<dim>, dim> grad_u;      ///< grad_u[j] = grad u_j
