@@ -38,6 +38,8 @@
 #include <ml_MultiLevelPreconditioner.h>
 #include <ml_epetra_utils.h>
 
+#include "probe_input.h"
+
 #include <algorithm>
 #include <fstream>
 #include <iostream>
@@ -46,27 +48,11 @@
 #include <vector>
 
 using namespace dealii;
+using probe::median;
+using probe::read_values;
 
 namespace
 {
-std::vector<double> read_values(const std::string& name)
-{
-  std::ifstream in(name);
-  if (!in)
-    throw std::runtime_error("amg_probe: cannot read " + name);
-  std::vector<double> v;
-  double x;
-  while (in >> x)
-    v.push_back(x);
-  return v;
-}
-
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
 // ML's coarsest level solved on every rank: KLU (through Amesos, on a serial communicator) of
 // the whole coarse matrix, gathered once; each application gathers the right-hand side. The same
 // scheme as fvfsi's GatheredDirectSolver (Where::every_rank), which takes a deal.II matrix and

@@ -90,18 +90,14 @@ namespace fvfsi
   {
     // The interface, whole on every rank, and the maps between its two sides (computed once,
     // on the undeformed meshes, where the two sides coincide).
-    fluid_zone = std::make_unique<InterfaceZone<dim>>(
+    interface = std::make_unique<FsiInterface<dim>>(
       *fluid_fv,
       fluid_mesh_parameters.patch_ids(prm.coupling.fluid_interface, "Coupling/Fluid interface"),
-      "Coupling/Fluid interface");
-    solid_zone = std::make_unique<InterfaceZone<dim>>(
-      *solid_fv,
+      "Coupling/Fluid interface", *solid_fv,
       solid_mesh_parameters.patch_ids(prm.coupling.solid_interface, "Coupling/Solid interface"),
       "Coupling/Solid interface");
-    traction_map = std::make_unique<FaceInterpolation<dim>>(*fluid_zone, *solid_zone);
-    displacement_map = std::make_unique<VertexProjection<dim>>(*solid_zone, *fluid_zone);
-    coupling = std::make_unique<PartitionedCoupling>(prm.coupling, dim * fluid_zone->n_points(),
-                                                     pcout, &timer);
+    coupling =
+      std::make_unique<PartitionedCoupling>(prm.coupling, interface->n_values(), pcout, &timer);
   }
 
   template <int dim>
@@ -164,7 +160,7 @@ namespace fvfsi
       {
         for (const unsigned int v : motion->patch_vertices(patch))
           vertex_displacement[v] = point_value<dim>(
-            displacement, fluid_zone->point_index(fluid_reference_fv->vertices()[v]));
+            displacement, interface->fluid_side().point_index(fluid_reference_fv->vertices()[v]));
         motion->set_patch_displacement(patch, vertex_displacement);
       }
     }
@@ -186,14 +182,8 @@ namespace fvfsi
   void FsiScene<dim>::transfer_tractions()
   {
     TimerOutput::Scope scope(timer, "traction transfer");
-    std::vector<Tensor<1, dim>> fluid_traction(fluid_fv->faces.size());
-    for (const auto& [f, i] : fluid_zone->local_faces())
-      fluid_traction[f] = fluid->wall_traction(f);
-    const auto on_solid = traction_map->interpolate(fluid_zone->gather_face_field(fluid_traction));
-    std::vector<Tensor<1, dim>> solid_traction(solid_fv->faces.size());
-    for (const auto& [f, j] : solid_zone->local_faces())
-      solid_traction[f] = on_solid[j];
-    solid->set_external_traction(solid_traction);
+    solid->set_external_traction(interface->tractions_to_solid(
+      [this](const unsigned int f) { return fluid->wall_traction(f); }));
   }
 
   template <int dim>
@@ -201,18 +191,12 @@ namespace fvfsi
   {
     TimerOutput::Scope scope(timer, "displacement transfer");
     if (prm.coupling.face_average_displacement)
-    {
       // The boundary-face displacements the fluid traction acts on, averaged to the vertices;
       // on the rim of the interface (a clamped end) the vertex values.
-      std::vector<Tensor<1, dim>> face_displacement(solid_fv->faces.size());
-      for (const auto& [f, j] : solid_zone->local_faces())
-        face_displacement[f] = solid->boundary_displacement(f);
-      return displacement_map->interpolate(solid_zone->face_to_point_average(
-        solid_zone->gather_face_field(face_displacement),
-        solid_zone->gather_point_field(solid->vertex_displacements())));
-    }
-    return displacement_map->interpolate(
-      solid_zone->gather_point_field(solid->vertex_displacements()));
+      return interface->displacements_to_fluid([this](const unsigned int f)
+                                               { return solid->boundary_displacement(f); },
+                                               solid->vertex_displacements());
+    return interface->displacements_to_fluid(solid->vertex_displacements());
   }
 
   template <int dim>
@@ -369,12 +353,12 @@ namespace fvfsi
     pcout << "fvfsi: FSI " << dim << "D, fluid " << fluid_fv->n_global_cells() << " cells, solid "
           << solid_fv->n_global_cells() << " cells ("
           << selection_name(SolidParameters::model_names, solid_parameters.model) << "), interface "
-          << fluid_zone->n_faces() << " fluid / " << solid_zone->n_faces()
+          << interface->fluid_side().n_faces() << " fluid / " << interface->solid_side().n_faces()
           << " solid faces, coupling " << prm.coupling.method << "\n";
-    const auto [least, most] = traction_map->coverage_range();
+    const auto [least, most] = interface->coverage_range();
     pcout << "fvfsi: interface: the fluid faces cover each solid face " << least << " to " << most
           << " times (1 where the sides match), the fluid points lie within "
-          << displacement_map->max_gap() << " m of the solid faces\n";
+          << interface->max_gap() << " m of the solid faces\n";
   }
 
   template <int dim>
@@ -418,14 +402,13 @@ namespace fvfsi
     summary.set_result("solid_outer_iterations", result.solid_outer_iterations);
     summary.set_result("solid_least_stretch", solid->least_stretch()); // 1: linear elasticity
     summary.set_result("coupled_wall_seconds", result.coupled_wall_seconds);
-    const auto [least, most] = traction_map->coverage_range();
+    const auto [least, most] = interface->coverage_range();
     summary.set_result("interface_coverage_min", least);
     summary.set_result("interface_coverage_max", most);
-    summary.set_result("interface_max_gap", displacement_map->max_gap());
+    summary.set_result("interface_max_gap", interface->max_gap());
     // The global interface zones' traffic: the bytes every rank receives from the others in the
     // two gathers of a coupling iteration, summed over the ranks (0 on one rank).
-    const double bytes = Utilities::MPI::sum(
-      double(fluid_zone->received_bytes() + solid_zone->received_bytes()), comm);
+    const double bytes = Utilities::MPI::sum(double(interface->received_bytes()), comm);
     summary.set_result(
       "interface_bytes_per_coupling_iteration",
       result.total_coupling_iterations > 0 ? bytes / result.total_coupling_iterations : 0.0);

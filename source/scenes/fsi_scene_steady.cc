@@ -104,12 +104,12 @@ namespace fvfsi
                             rows, comm);
     rows.clear();
     if (Utilities::MPI::this_mpi_process(comm) == 0) // d is whole on every rank
-      for (unsigned int i = 0; i < fluid_zone->n_points(); ++i)
+      for (unsigned int i = 0; i < interface->fluid_side().n_points(); ++i)
         rows.emplace_back(coupling->displacement().begin() + i * dim,
                           coupling->displacement().begin() + (i + 1) * dim);
-    write_point_values<dim>(output_directory + "/interface_state.txt", vector_columns<dim>("d", ""),
-                            rows.empty() ? std::vector<Point<dim>>() : fluid_zone->points, rows,
-                            comm);
+    write_point_values<dim>(
+      output_directory + "/interface_state.txt", vector_columns<dim>("d", ""),
+      rows.empty() ? std::vector<Point<dim>>() : interface->fluid_side().points, rows, comm);
   }
 
   template <int dim>
@@ -128,9 +128,9 @@ namespace fvfsi
     const PointValues<dim> interface_state(directory + "/interface_state.txt",
                                            vector_columns<dim>("d", ""), parameter);
     InterfaceVector d = coupling->displacement();
-    for (unsigned int i = 0; i < fluid_zone->n_points(); ++i)
+    for (unsigned int i = 0; i < interface->fluid_side().n_points(); ++i)
     {
-      const auto value = interface_state.value(fluid_zone->points[i]);
+      const auto value = interface_state.value(interface->fluid_side().points[i]);
       for (unsigned int j = 0; j < dim; ++j)
         d[i * dim + j] = value[j];
     }

@@ -56,9 +56,7 @@
 #include <fvfsi/base/time_control.h>
 #include <fvfsi/base/time_levels.h>
 #include <fvfsi/coupling/coupling_method.h>
-#include <fvfsi/coupling/face_interpolation.h>
-#include <fvfsi/coupling/interface_zone.h>
-#include <fvfsi/coupling/vertex_projection.h>
+#include <fvfsi/coupling/fsi_interface.h>
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/io/vtu_output.h>
 #include <fvfsi/mesh/fv_geometry.h>
@@ -201,8 +199,8 @@ struct Outcome
 // steps of Algorithm 1. Two meshes with their own decompositions over the ranks: the fluid's, which
 // moves (fluid_fv), and a copy of its undeformed geometry (fluid_reference_fv: the mesh motion
 // solves on it, and it remembers where each vertex started); the solid's, which never moves
-// (total Lagrangian). The three solvers read one clock. The interface is seen from each side by an
-// InterfaceZone; traction_map and displacement_map carry values across it. The coupling
+// (total Lagrangian). The three solvers read one clock. The interface (fvfsi::FsiInterface) is
+// seen from each side by an InterfaceZone, and carries tractions and displacements across. The coupling
 // parameters (method, omega, tolerance, ...) are the library's struct, CouplingParameters: the
 // program implements fixed relaxation and Aitken itself and hands IQN-ILS to the library.
 class PressureColumn
@@ -238,9 +236,7 @@ private:
   std::unique_ptr<FluidSolver<dim>> fluid;
   std::unique_ptr<MeshMotion<dim>> motion;
   std::unique_ptr<SolidSolver<dim>> solid;
-  std::unique_ptr<InterfaceZone<dim>> fluid_zone, solid_zone;
-  std::unique_ptr<FaceInterpolation<dim>> traction_map;
-  std::unique_ptr<VertexProjection<dim>> displacement_map;
+  std::unique_ptr<FsiInterface<dim>> interface;
   std::unique_ptr<CouplingMethod> iqn_ils;
 
   std::vector<Point<dim>> vertices_old; // fluid vertex positions at t^n
@@ -288,7 +284,8 @@ void PressureColumn::make_grids()
 // of ranks numbers them alike. On this small interface (4 faces a side) each rank can then
 // interpolate between the two sides by itself; only interface values cross between ranks.
 //
-// The two maps are computed once, on the undeformed meshes, where the two sides coincide:
+// fvfsi::FsiInterface holds the two zones and two maps between them, computed once, on the
+// undeformed meshes, where the two sides coincide:
 // - FaceInterpolation (fluid faces -> solid faces): the weights w_jk of Eq. 33, the overlap of
 //   solid face j and fluid face k over the area of j. Here the faces match one to one, so w_jk is
 //   1 or 0; the class does the same on non-matching interfaces (tests/coupling/interface_transfer).
@@ -302,20 +299,16 @@ void PressureColumn::make_grids()
 void PressureColumn::make_interface()
 {
   const CouplingParameters& c = coupling;
-  fluid_zone = std::make_unique<InterfaceZone<dim>>(
+  interface = std::make_unique<FsiInterface<dim>>(
     *fluid_fv,
     std::vector<unsigned int>{prm.mesh.patch_id(c.fluid_interface[0], "Coupling/Fluid interface")},
-    "fluid side");
-  solid_zone =
-    std::make_unique<InterfaceZone<dim>>(*solid_fv,
-                                         std::vector<unsigned int>{prm.solid_mesh.patch_id(
-                                           c.solid_interface[0], "Coupling/Solid interface")},
-                                         "solid side");
-  traction_map = std::make_unique<FaceInterpolation<dim>>(*fluid_zone, *solid_zone);
-  displacement_map = std::make_unique<VertexProjection<dim>>(*solid_zone, *fluid_zone);
+    "fluid side", *solid_fv,
+    std::vector<unsigned int>{
+      prm.solid_mesh.patch_id(c.solid_interface[0], "Coupling/Solid interface")},
+    "solid side");
   if (c.method == "IQN-ILS")
     iqn_ils = CouplingMethod::create(c);
-  d.reinit(dim * fluid_zone->n_points());
+  d.reinit(interface->n_values());
   d_levels.start(d);
 }
 
@@ -470,8 +463,8 @@ void PressureColumn::move_fluid_mesh(const InterfaceVector& displacement)
   const std::string& patch = coupling.fluid_interface[0];
   std::vector<Tensor<1, dim>> vertex_displacement(fluid_fv->vertices().size());
   for (const unsigned int v : motion->patch_vertices(patch))
-    vertex_displacement[v] =
-      point_value<dim>(displacement, fluid_zone->point_index(fluid_reference_fv->vertices()[v]));
+    vertex_displacement[v] = point_value<dim>(
+      displacement, interface->fluid_side().point_index(fluid_reference_fv->vertices()[v]));
   motion->set_patch_displacement(patch, vertex_displacement);
   const std::vector<Point<dim>> x = motion->vertex_positions();
 
@@ -487,8 +480,8 @@ void PressureColumn::move_fluid_mesh(const InterfaceVector& displacement)
 // wall, t_f = rho (p_f n_f - nu (n . grad u)_f) [Pa], with n_f out of the fluid (into the solid):
 // Eq. 15 without its last two terms (which the paper says can usually be omitted), written with
 // the normal out of the fluid and with p the kinematic pressure.
-// Each rank evaluates it on its own fluid interface faces. gather_face_field collects the
-// interface whole on every rank, FaceInterpolation applies Eq. 32,
+// FsiInterface::tractions_to_solid takes it on each rank's own fluid interface faces;
+// gather_face_field collects the interface whole on every rank, FaceInterpolation applies Eq. 32,
 //   t_j = sum_k w_jk t_k,
 // and each rank keeps the solid faces it owns. Sum_j S_j w_jk = S_k, so the total force is
 // carried over exactly: the interpolation is conservative.
@@ -500,26 +493,18 @@ void PressureColumn::move_fluid_mesh(const InterfaceVector& displacement)
 // here (7e-4) the difference to the deformed faces does not matter.
 void PressureColumn::transfer_tractions()
 {
-  std::vector<Tensor<1, dim>> fluid_traction(fluid_fv->faces.size());
-  for (const auto& [f, i] : fluid_zone->local_faces())
-    fluid_traction[f] = fluid->wall_traction(f);
-  const std::vector<Tensor<1, dim>> on_solid =
-    traction_map->interpolate(fluid_zone->gather_face_field(fluid_traction));
-  std::vector<Tensor<1, dim>> solid_traction(solid_fv->faces.size());
-  for (const auto& [f, j] : solid_zone->local_faces())
-    solid_traction[f] = on_solid[j];
-  solid->set_external_traction(solid_traction);
+  solid->set_external_traction(interface->tractions_to_solid([this](const unsigned int f)
+                                                             { return fluid->wall_traction(f); }));
 }
 
 // @sect4{Line 11: PressureColumn::transfer_displacements}
 // The solid's displacement lives at its cell centres. Its vertex values (the least-squares
 // reconstruction of Appendix B, as in step-1) are gathered on the solid side of the interface
-// and projected to the fluid interface points (section 3.5.2). The result d~ is an
+// and projected to the fluid interface points (section 3.5.2; FsiInterface::displacements_to_fluid). The result d~ is an
 // InterfaceVector like d: the two can be subtracted.
 InterfaceVector PressureColumn::transfer_displacements() const
 {
-  return displacement_map->interpolate(
-    solid_zone->gather_point_field(solid->vertex_displacements()));
+  return interface->displacements_to_fluid(solid->vertex_displacements());
 }
 
 // @sect4{Line 16: PressureColumn::next_displacement}

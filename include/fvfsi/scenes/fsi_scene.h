@@ -25,10 +25,8 @@
 
 #include <fvfsi/ale/mesh_motion.h>
 #include <fvfsi/base/time_control.h>
-#include <fvfsi/coupling/face_interpolation.h>
-#include <fvfsi/coupling/interface_zone.h>
+#include <fvfsi/coupling/fsi_interface.h>
 #include <fvfsi/coupling/partitioned_coupling.h>
-#include <fvfsi/coupling/vertex_projection.h>
 #include <fvfsi/fluid/fluid_solver.h>
 #include <fvfsi/fv/point_probes.h>
 #include <fvfsi/io/checkpoint.h>
@@ -201,9 +199,8 @@ namespace fvfsi
     std::unique_ptr<FluidSolver<dim>> fluid;
     std::unique_ptr<MeshMotion<dim>> motion;
     std::unique_ptr<SolidSolver<dim>> solid;
-    std::unique_ptr<InterfaceZone<dim>> fluid_zone, solid_zone;
-    std::unique_ptr<FaceInterpolation<dim>> traction_map;
-    std::unique_ptr<VertexProjection<dim>> displacement_map;
+    /// The interface's two sides and the transfers across it.
+    std::unique_ptr<FsiInterface<dim>> interface;
     /// Algorithm 1's iteration, the coupling method and the interface displacements.
     std::unique_ptr<PartitionedCoupling> coupling;
     PointProbes<dim> probes;       ///< Solid scene/Probes: displacement
