@@ -16,7 +16,7 @@ that the machine's drift falls on all alike:
 
 usage (from the project root):
   python3 doc/results/pressure_options.py probe AMG_PROBE HYPRE_PROBE DUMP_DIR [REPEATS]
-  python3 doc/results/pressure_options.py runs FVFSI WORK [ROUNDS]
+  python3 doc/results/pressure_options.py runs FVFSI WORK [ROUNDS [solves|amg]]
 Appends its records to doc/results/pressure_options.jsonl and prints the tables.
 """
 import json
@@ -50,14 +50,27 @@ PROBE_VARIANTS = [
 HYPRE_THRESHOLDS = [("hypre BoomerAMG (PETSc CG), strong threshold 0.25", "0.25"),
                     ("hypre BoomerAMG (PETSc CG), strong threshold 0.5", "0.5")]
 
-# Whole runs: options the .prm file sets (none: the defaults).
-RUN_OPTIONS = [
+# Whole runs: options the .prm file sets (none: the defaults), in two groups.
+RUN_GROUPS = {}
+RUN_GROUPS["solves"] = [
     ("defaults (2 non-orthogonal correctors)", []),
     ("Non-orthogonal correctors = 1", ["Fluid/Non-orthogonal correctors=1"]),
     ("Non-orthogonal correctors = 0", ["Fluid/Non-orthogonal correctors=0"]),
     ("AMG aggregation threshold = 0.05", ["Fluid pressure solver/AMG aggregation threshold=0.05"]),
     ("Preconditioner update interval = 1", ["Fluid/Preconditioner update interval=1"]),
     ("Preconditioner update interval = 50", ["Fluid/Preconditioner update interval=50"]),
+]
+# ML's options of the probe that fvfsi's LinearSolver exposes, alone and with no non-orthogonal
+# corrector.
+RUN_GROUPS["amg"] = [
+    ("defaults (2 non-orthogonal correctors)", []),
+    ("AMG smoother sweeps = 1", ["Fluid pressure solver/AMG smoother sweeps=1"]),
+    ("AMG coarse size = 4000", ["Fluid pressure solver/AMG coarse size=4000"]),
+    ("AMG smoother sweeps = 1, coarse size = 4000", ["Fluid pressure solver/AMG smoother sweeps=1",
+                                                     "Fluid pressure solver/AMG coarse size=4000"]),
+    ("Non-orthogonal correctors = 0", ["Fluid/Non-orthogonal correctors=0"]),
+    ("Non-orthogonal correctors = 0, AMG smoother sweeps = 1", ["Fluid/Non-orthogonal correctors=0",
+                                                                "Fluid pressure solver/AMG smoother sweeps=1"]),
 ]
 
 
@@ -125,7 +138,8 @@ def one_run(fvfsi, work, sets):
             "iterations_per_solve": float(m.group(2)), "drag": result["drag"], "lift": result["lift"]}
 
 
-def runs(fvfsi, work, rounds):
+def runs(fvfsi, work, rounds, group):
+    RUN_OPTIONS = RUN_GROUPS[group]
     os.makedirs(work, exist_ok=True)
     info = machine()
     data = {label: [] for label, _ in RUN_OPTIONS}
@@ -146,7 +160,7 @@ def runs(fvfsi, work, rounds):
         d_lift = (r[0]["lift"] - base[0]["lift"]) / abs(base[0]["lift"])
         print(f"| {label} | {r[0]['solves']} | {r[0]['iterations_per_solve']:.2f} | {solve:.2f} | {wall:.2f} | "
               f"{wall / base_wall:.3f} | {d_drag:+.1e} | {d_lift:+.1e} |")
-        records.append({"part": "runs", "option": label, "sets": sets, **info, "runs": r})
+        records.append({"part": "runs", "group": group, "option": label, "sets": sets, **info, "runs": r})
     append(records)
 
 
@@ -156,4 +170,5 @@ if __name__ == "__main__":
     if sys.argv[1] == "probe":
         probe(sys.argv[2], sys.argv[3], sys.argv[4], int(sys.argv[5]) if len(sys.argv) > 5 else 30)
     else:
-        runs(sys.argv[2], sys.argv[3], int(sys.argv[4]) if len(sys.argv) > 4 else 3)
+        runs(sys.argv[2], sys.argv[3], int(sys.argv[4]) if len(sys.argv) > 4 else 3,
+             sys.argv[5] if len(sys.argv) > 5 else "solves")

@@ -2,6 +2,9 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
+
 #include <fvfsi/base/selection.h>
 #include <fvfsi/fv/linear_solver.h>
 
@@ -50,6 +53,15 @@ namespace fvfsi
       "aggregate; on stretched cells a larger value lets the aggregates follow the strong "
       "direction (prm/turek_hron_fsi3.prm's pressure: 0.05, doc/results/performance.md).",
       Patterns::Double(0, 1));
+    prm.add_parameter("AMG smoother sweeps", amg_smoother_sweeps,
+                      "With Preconditioner = AMG: the degree of ML's Chebyshev smoother (deal.II's "
+                      "smoother sweeps). 1 takes more and cheaper CG iterations "
+                      "(doc/results/performance.md, section 15).",
+                      Patterns::Integer(1, 10));
+    prm.add_parameter("AMG coarse size", amg_coarse_size,
+                      "With Preconditioner = AMG: the coarsest level of ML's hierarchy has at most "
+                      "this many rows and is solved directly (KLU, on the first rank).",
+                      Patterns::Integer(1));
     prm.leave_subsection();
   }
 
@@ -66,9 +78,14 @@ namespace fvfsi
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
       data.elliptic = true;
       data.higher_order_elements = false;
-      data.smoother_sweeps = 2;
+      data.smoother_sweeps = parameters.amg_smoother_sweeps;
       data.aggregation_threshold = parameters.amg_aggregation_threshold;
-      amg->initialize(matrix, data);
+      // deal.II's parameter list for ML, with the coarse size it does not expose.
+      Teuchos::ParameterList list;
+      std::unique_ptr<Epetra_MultiVector> constant_modes;
+      data.set_parameters(list, constant_modes, matrix);
+      list.set("coarse: max size", int(parameters.amg_coarse_size));
+      amg->initialize(matrix, list);
       preconditioner = std::move(amg);
     }
     else if (parameters.preconditioner == LinearSolverParameters::Preconditioner::ilu)

@@ -48,6 +48,10 @@ namespace fvfsi
     /// ML's aggregation threshold: a connection a_ij with |a_ij| below this times
     /// sqrt(|a_ii a_jj|) is weak and ignored when the AMG forms its aggregates.
     double amg_aggregation_threshold = 0.02;
+    /// ML's smoother: the degree of its Chebyshev polynomial (deal.II's smoother_sweeps).
+    unsigned int amg_smoother_sweeps = 2;
+    /// ML's coarsest level: at most this many rows, solved directly (KLU).
+    unsigned int amg_coarse_size = 2000;
 
     /// Declares `subsection <name>` (e.g. "Linear solver").
     void declare(dealii::ParameterHandler& prm, const std::string& name = "Linear solver");
