@@ -48,8 +48,8 @@ namespace fvfsi
     v_levels.start(v);
     for (auto& g : grad_u)
       g = CellGradient<dim>(geometry);
-    for (auto& v : vertex_u)
-      v.assign(geometry.vertices().size(), 0.0);
+    for (auto& values : vertex_u)
+      values.assign(geometry.vertices().size(), 0.0);
     boundary_u.assign(geometry.faces.size(), Tensor<1, dim>());
     boundary_G.assign(geometry.faces.size(), Tensor<2, dim>());
     external_traction.assign(geometry.faces.size(), Tensor<1, dim>());
