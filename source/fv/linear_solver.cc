@@ -53,14 +53,15 @@ namespace fvfsi
       "aggregate; on stretched cells a larger value lets the aggregates follow the strong "
       "direction (prm/turek_hron_fsi3.prm's pressure: 0.05, doc/results/performance.md).",
       Patterns::Double(0, 1));
+    // ML's smoother degree and coarse size (doc/results/performance.md, section 15: on the CFD3
+    // pressure neither 1 nor a larger coarse level gains in a whole run).
     prm.add_parameter("AMG smoother sweeps", amg_smoother_sweeps,
-                      "With Preconditioner = AMG: the degree of ML's Chebyshev smoother (deal.II's "
-                      "smoother sweeps). 1 takes more and cheaper CG iterations "
-                      "(doc/results/performance.md, section 15).",
+                      "With Preconditioner = AMG: "
+                      "the degree of ML's Chebyshev smoother.",
                       Patterns::Integer(1, 10));
     prm.add_parameter("AMG coarse size", amg_coarse_size,
-                      "With Preconditioner = AMG: the coarsest level of ML's hierarchy has at most "
-                      "this many rows and is solved directly (KLU, on the first rank).",
+                      "With Preconditioner = AMG: at most "
+                      "this many rows on ML's coarsest level, solved by KLU.",
                       Patterns::Integer(1));
     prm.leave_subsection();
   }
