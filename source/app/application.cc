@@ -215,6 +215,15 @@ namespace fvfsi
       summary.set("n_mpi_ranks", Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
       if (parameters.time.step_limit > 0) // --steps: the results are those of a shortened run
         summary.set("step_limit", parameters.time.step_limit);
+      std::string steady_settings; // the steady settings taken (app/steady_settings.h)
+      for (const std::string& setting : parameters.steady_settings)
+      {
+        if (root)
+          out << "fvfsi: steady run, not in the file: " << setting << "\n";
+        steady_settings += (steady_settings.empty() ? "" : "; ") + setting;
+      }
+      if (!steady_settings.empty())
+        summary.set("steady_settings", steady_settings);
       try
       {
         if (parameters.run.dim == 2)

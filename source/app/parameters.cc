@@ -2,6 +2,7 @@
 
 #include <fvfsi/app/embedded_files.h>
 #include <fvfsi/app/parameters.h>
+#include <fvfsi/app/steady_settings.h>
 #include <fvfsi/base/exceptions.h>
 
 #include <fstream>
@@ -11,38 +12,34 @@ namespace fvfsi
 {
   using namespace dealii;
 
-  namespace
+  void apply_override(ParameterHandler& prm, const std::string& assignment)
   {
-    void apply_override(ParameterHandler& prm, const std::string& assignment)
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos)
+      throw std::runtime_error("--set \"" + assignment + "\": expected \"Section/Key=value\"");
+    std::string path = Utilities::trim(assignment.substr(0, eq));
+    const std::string value = Utilities::trim(assignment.substr(eq + 1));
+    std::vector<std::string> sections;
+    for (auto slash = path.find('/'); slash != std::string::npos; slash = path.find('/'))
     {
-      const auto eq = assignment.find('=');
-      if (eq == std::string::npos)
-        throw std::runtime_error("--set \"" + assignment + "\": expected \"Section/Key=value\"");
-      std::string path = Utilities::trim(assignment.substr(0, eq));
-      const std::string value = Utilities::trim(assignment.substr(eq + 1));
-      std::vector<std::string> sections;
-      for (auto slash = path.find('/'); slash != std::string::npos; slash = path.find('/'))
-      {
-        sections.push_back(Utilities::trim(path.substr(0, slash)));
-        path = path.substr(slash + 1);
-      }
-      for (const auto& s : sections)
-        prm.enter_subsection(s);
-      try
-      {
-        prm.set(Utilities::trim(path), value);
-      }
-      catch (const std::exception& e)
-      {
-        for (unsigned int i = 0; i < sections.size(); ++i)
-          prm.leave_subsection();
-        throw std::runtime_error("--set \"" + assignment + "\": " + concise_message(e));
-      }
+      sections.push_back(Utilities::trim(path.substr(0, slash)));
+      path = path.substr(slash + 1);
+    }
+    for (const auto& s : sections)
+      prm.enter_subsection(s);
+    try
+    {
+      prm.set(Utilities::trim(path), value);
+    }
+    catch (const std::exception& e)
+    {
       for (unsigned int i = 0; i < sections.size(); ++i)
         prm.leave_subsection();
+      throw std::runtime_error("--set \"" + assignment + "\": " + concise_message(e));
     }
-
-  } // namespace
+    for (unsigned int i = 0; i < sections.size(); ++i)
+      prm.leave_subsection();
+  }
 
   const SelectionNames<RunParameters::Scene> RunParameters::scene_names = {
     {"poisson", Scene::poisson},
@@ -127,6 +124,7 @@ namespace fvfsi
     }
     for (const auto& o : overrides)
       apply_override(parameters.prm, o);
+    parameters.steady_settings = apply_steady_settings(parameters);
   }
 
 } // namespace fvfsi

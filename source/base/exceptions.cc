@@ -19,4 +19,12 @@ namespace fvfsi
     const auto start = s.find_first_not_of(" \n");
     return start == std::string::npos ? s : s.substr(start);
   }
+
+  std::string three_digits(const double x)
+  {
+    std::ostringstream text;
+    text.precision(3);
+    text << x;
+    return text.str();
+  }
 } // namespace fvfsi

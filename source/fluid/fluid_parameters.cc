@@ -51,8 +51,9 @@ namespace fvfsi
     prm.add_parameter(
       "Steady tolerance", steady_tolerance,
       "Steady: stop when max|u^k - u^(k-1)| / U over one pseudo step is below this (U: "
-      "the larger of max|u| and sqrt(max p - min p), p kinematic).",
-      PositiveDouble(1));
+      "the larger of max|u| and sqrt(max p - min p), p kinematic). Steady FSI: unless given, "
+      "0.1 x Coupling/Tolerance (see the log's steady settings).",
+      PositiveDouble(1), /*has_to_be_set, i.e. tell a given value from the default:*/ true);
     prm.add_parameter(
       "Consistent pressure coupling", consistent_coupling,
       "Steady: true: SIMPLEC (Van Doormaal and Raithby) instead of SIMPLE: the pressure "
@@ -62,7 +63,9 @@ namespace fvfsi
       "fluxes carry the difference of the two coefficients times the last pressure gradient, "
       "so that the converged state is SIMPLE's (the same Rhie-Chow flux). With alpha near 1 "
       "SIMPLE's pressure correction is 1 / (1 - alpha) times too strong where viscosity "
-      "dominates, which makes fine meshes oscillate (doc/results/cavity.md).");
+      "dominates, which makes fine meshes oscillate (doc/results/cavity.md). Unless given, a "
+      "steady run takes true (see the log's steady settings).",
+      Patterns::Bool(), /*has_to_be_set: tell a given value from the default*/ true);
     prm.add_parameter(
       "Max steady iterations", max_steady_iterations,
       "Steady: limit of pseudo time steps (exceeding it stops the run with an error).",
@@ -163,8 +166,9 @@ namespace fvfsi
       "for p and pFinal); 0: Residual reduction for every solve. On the Turek-Hron CFD3 channel "
       "(400 steps, 20 960 cells, Residual reduction 1e-6) 1e-2 takes 4.9 instead of 10.2 CG "
       "iterations per solve and changes drag and lift by 2e-9 and 4e-5 relative, the continuity "
-      "error not at all; 1e-1 changes the lift by 1.4e-4 (doc/results/performance.md).",
-      Patterns::Double(0, 1));
+      "error not at all; 1e-1 changes the lift by 1.4e-4 (doc/results/performance.md). Unless "
+      "given, a steady run takes 1e-1 (see the log's steady settings).",
+      Patterns::Double(0, 1), /*has_to_be_set: tell a given value from the default*/ true);
     prm.leave_subsection();
   }
 

@@ -94,20 +94,21 @@ namespace fvfsi
     // from the spatial coefficient a*_P assembled so far. Transient outer loops relaxed by
     // alpha < 1 add such a pseudo time step to the physical one, with the previous outer loop's
     // u as its old value (the final loop has alpha = 1: the converged step is unchanged).
-    const auto [c0, c1, c2] = time_coefficients();
-    (void)c0;
+    const BdfCoefficients bdf = time_coefficients();
     const double alpha = prm.transient ? outer_alpha : relaxation;
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
     {
       const double V = geometry.cell_volume[c];
       const double pseudo = momentum.diagonal[c] / V * (1 - alpha) / alpha;
-      c0_cell[c] = prm.transient ? (c1 * V_levels.o[c] - c2 * V_levels.oo[c]) / V + pseudo : pseudo;
-      const double c1V = prm.transient ? c1 * V_levels.o[c] : c0_cell[c] * V;
+      fvm::Ddt ddt = fvm::ddt(bdf, V_levels.o[c], V_levels.oo[c]); // d(V u)/dt, Eq. 17
+      c0_cell[c] = prm.transient ? ddt.diagonal / V + pseudo : pseudo;
+      if (!prm.transient) // the pseudo time step alone, from the last iterate u^o
+        ddt.old_weight = c0_cell[c] * V;
       momentum.diagonal[c] += c0_cell[c] * V;
       for (unsigned int j = 0; j < dim; ++j)
       {
-        B_time[j][c] = c1V * u_levels.o.components[j].local_element(c) -
-                       c2 * V_levels.oo[c] * u_levels.oo.components[j].local_element(c);
+        B_time[j][c] = ddt.explicit_part(u_levels.o.components[j].local_element(c),
+                                         u_levels.oo.components[j].local_element(c));
         if (prm.transient && alpha < 1)
           B_time[j][c] += pseudo * V * u.components[j].local_element(c);
         B_rest[j].local_element(c) += V * body_force_value[j][c];
@@ -122,18 +123,12 @@ namespace fvfsi
     if (prm.convection == FluidParameters::Convection::upwind)
       return;
     const auto& face = geometry.faces[f];
-    const bool from_P = phi >= 0;
-    const unsigned int U = from_P ? face.P : face.N;
-    const Tensor<1, dim> to_face = face.centre - geometry.centroid[U]; // r_f - r_U
+    const auto up = fvc::upwind_side(face, geometry.centroid, phi);
     for (unsigned int j = 0; j < dim; ++j)
-    {
-      double correction;
-      if (prm.convection == FluidParameters::Convection::linear_upwind)
-        correction = to_face * grad_u[j][U];
-      else // central
-        correction = face.interpolate(u[face.P][j], u[face.N][j]) - u[U][j];
-      fvc::outflow(face, phi * correction, B_rest[j]);
-    }
+      fvc::outflow(face,
+                   phi * fvc::convection_correction(prm.convection, face, up, u[face.P][j],
+                                                    u[face.N][j], grad_u[j][up.U]),
+                   B_rest[j]);
   }
 
   template <int dim>

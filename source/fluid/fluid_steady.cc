@@ -3,6 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <fvfsi/base/exceptions.h>
 #include <fvfsi/fluid/fluid_solver.h>
 
 #include <algorithm>
@@ -28,14 +29,6 @@ namespace fvfsi
     constexpr unsigned int steady_window = 50;
     constexpr unsigned int stall_windows = 2;
     constexpr double minimum_relaxation = 0.3;
-
-    std::string three_digits(const double x)
-    {
-      std::ostringstream text;
-      text.precision(3);
-      text << x;
-      return text.str();
-    }
 
     double geometric_mean(const std::vector<double>& changes)
     {

@@ -309,10 +309,17 @@ namespace fvfsi
 
   GlobalArchive::GlobalArchive(std::stringstream& buffer, const bool loading)
   {
+    buffer.clear(); // the flags of the last read (end of file)
     if (loading)
+    {
+      buffer.seekg(0);
       in = std::make_unique<boost::archive::binary_iarchive>(buffer);
+    }
     else
+    {
+      buffer.str(""); // a new save replaces the last
       out = std::make_unique<boost::archive::binary_oarchive>(buffer);
+    }
   }
 
   GlobalArchive::GlobalArchive(const std::string& file, const bool loading, const MPI_Comm comm)

@@ -57,8 +57,6 @@ namespace fvfsi
                       [this](MeshArchive<dim>& a) { fluid_state(a); });
     capture_mesh<dim>(step_start_solid, *solid_fv, solid_fv->vertices(),
                       [this](MeshArchive<dim>& a) { solid->checkpoint(a); });
-    step_start_global.str("");
-    step_start_global.clear();
     GlobalArchive global(step_start_global, false);
     global_state(global);
   }
@@ -75,8 +73,6 @@ namespace fvfsi
     fluid_state(*step_start_fluid);
     rewind_mesh(*step_start_solid, *solid_fv);
     solid->checkpoint(*step_start_solid);
-    step_start_global.clear();
-    step_start_global.seekg(0);
     GlobalArchive global(step_start_global, true);
     global_state(global);
   }

@@ -51,6 +51,8 @@ namespace fvfsi
     MeshParameters solid_mesh; ///< FSI: the solid's mesh (subsection `Solid mesh`)
     FsiSceneParameters fsi;
     dealii::ParameterHandler prm;
+    /// The steady settings read_parameters applied (app/steady_settings.h), one line each.
+    std::vector<std::string> steady_settings;
 
     /// The parameters of an FSI scene.
     FsiSceneInput fsi_input() const
@@ -66,4 +68,8 @@ namespace fvfsi
    */
   void read_parameters(AllParameters& parameters, const std::string& file,
                        const std::vector<std::string>& overrides);
+
+  /// Set one parameter from "Section/Sub/Key=value" (as `--set` does); the error names the
+  /// assignment.
+  void apply_override(dealii::ParameterHandler& prm, const std::string& assignment);
 } // namespace fvfsi

@@ -1,6 +1,6 @@
 #pragma once
 // Error messages for users: the text of an exception without deal.II's source-file banner and
-// stack trace.
+// stack trace, and the numbers in them.
 
 #include <exception>
 #include <string>
@@ -9,4 +9,7 @@ namespace fvfsi
 {
   /// For a dealii::ExceptionBase, only its "additional information"; otherwise what().
   std::string concise_message(const std::exception& e);
+
+  /// x with three significant digits ("0.95", "1e-06"), for numbers in messages.
+  std::string three_digits(double x);
 } // namespace fvfsi

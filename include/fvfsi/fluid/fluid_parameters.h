@@ -4,6 +4,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <fvfsi/fv/convection_scheme.h>
 #include <fvfsi/fv/linear_solver.h>
 
 #include <string>
@@ -60,12 +61,7 @@ namespace fvfsi
     double velocity_bound = 10;
     unsigned int preconditioner_update_interval = 10; ///< time steps between ILU/AMG rebuilds
     /// The face velocity of the convection term (deferred correction on implicit upwind).
-    enum class Convection
-    {
-      upwind,        ///< first order
-      linear_upwind, ///< upwind value + its gradient times (r_f - r_U): second order
-      central        ///< linear interpolation: second order, unbounded
-    };
+    using Convection = ConvectionScheme; ///< fv/terms.h
     Convection convection = Convection::linear_upwind;
 
     std::string velocity_inlet, outlet, wall, symmetry;

@@ -155,7 +155,8 @@ namespace fvfsi
     /// Saving (rank 0 writes `file`; the other ranks' calls do nothing) or loading (every rank
     /// reads `file`).
     GlobalArchive(const std::string& file, bool loading, MPI_Comm comm);
-    /// In memory, on every rank: saving into or loading from `buffer`.
+    /// In memory, on every rank: saving into `buffer` (replacing what it held) or loading from
+    /// its start.
     GlobalArchive(std::stringstream& buffer, bool loading);
     bool loading() const { return in != nullptr; }
     template <typename T>

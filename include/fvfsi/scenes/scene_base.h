@@ -151,8 +151,6 @@ namespace fvfsi
                                                 const GlobalState& global_state)
   {
     capture_mesh<dim>(step_start, *fv, reference_vertices, mesh_state);
-    step_start_global.str("");
-    step_start_global.clear();
     GlobalArchive global(step_start_global, false);
     global& clock;
     global_state(global);
@@ -166,8 +164,6 @@ namespace fvfsi
   {
     move_to(rewind_mesh(*step_start, *fv));
     mesh_state(*step_start);
-    step_start_global.clear();
-    step_start_global.seekg(0);
     GlobalArchive global(step_start_global, true);
     global& clock;
     global_state(global);
