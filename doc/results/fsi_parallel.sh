@@ -24,13 +24,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source doc/results/common.sh
-fvfsi=${1:-build/fvfsi}
-runs=${2:-build/fsi_parallel}
+study_arguments build/fsi_parallel "${1:-}" "${2:-}"   # fvfsi, runs; the machine line
 repeats=${3:-3}
 shift $(( $# < 3 ? $# : 3 ))
-mkdir -p "$runs"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-machine_line "commit $(git rev-parse --short HEAD)"
 for r in $(seq 1 "$repeats"); do
   for np in 1 2 core1; do
     out=$runs/np${np}_$r

@@ -32,12 +32,11 @@ namespace
     unsigned int pseudo_steps;
   };
 
-  Cavity run_cavity(const std::vector<std::string>& extra)
+  Cavity run_cavity(std::vector<std::string> overrides)
   {
-    std::vector<std::string> overrides = {"Output directory=out"};
-    overrides.insert(overrides.end(), extra.begin(), extra.end());
-    const auto p = shipped_case("cavity_rigid_bottom", overrides);
     std::filesystem::create_directories("out");
+    overrides.push_back("Output directory=out");
+    const auto p = shipped_case("cavity_rigid_bottom", overrides);
     fvfsi::FluidScene<2> scene(p->mesh, p->fluid, p->fluid_scene, p->time, MPI_COMM_WORLD, ".",
                                "out");
     scene.run();

@@ -34,10 +34,9 @@ Point<dim> moved(const Point<dim>& x, const unsigned int step)
 template <int dim>
 void run(std::ofstream& out)
 {
-  parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
-  make_test_mesh(tria, "subdivided_hyper_cube", dim == 2 ? "12: 0: 1: false" : "5: 0: 1: false", 1,
-                 0.25);
-  fvfsi::FVGeometry<dim> fv(tria);
+  TestMesh<dim> mesh(out, "subdivided_hyper_cube", dim == 2 ? "12: 0: 1: false" : "5: 0: 1: false",
+                     1);
+  fvfsi::FVGeometry<dim>& fv = *mesh.fv;
   out << dim << "D: " << fv.n_global_cells() << " cells" << std::endl;
 
   const auto total_volume = [&fv]()

@@ -143,6 +143,16 @@ namespace fvfsi
     std::unique_ptr<MeshArchive<dim>> restart_archive;
     std::unique_ptr<MeshArchive<dim>> step_start;
     std::stringstream step_start_global;
+
+  private:
+    /// The clock and what `global_state` adds, saved to step_start_global or loaded from it.
+    template <typename GlobalState>
+    void archive_step_start_global(bool loading, const GlobalState& global_state)
+    {
+      GlobalArchive global(step_start_global, loading);
+      global& clock;
+      global_state(global);
+    }
   };
 
   template <int dim>
@@ -151,9 +161,7 @@ namespace fvfsi
                                                 const GlobalState& global_state)
   {
     capture_mesh<dim>(step_start, *fv, reference_vertices, mesh_state);
-    GlobalArchive global(step_start_global, false);
-    global& clock;
-    global_state(global);
+    archive_step_start_global(false, global_state);
   }
 
   template <int dim>
@@ -164,9 +172,7 @@ namespace fvfsi
   {
     move_to(rewind_mesh(*step_start, *fv));
     mesh_state(*step_start);
-    GlobalArchive global(step_start_global, true);
-    global& clock;
-    global_state(global);
+    archive_step_start_global(true, global_state);
   }
 
   template <int dim>
