@@ -8,9 +8,12 @@
 #                 switch it, and Coupling/Start time = 0 (the file's 2 s stops a steady run with
 #                 an error that says to set 0); the reference values of FSI1
 #   cfd2, cavity, kovasznay, thick_plate   the shipped steady files that leave some unset
+#   thick_plate_h025   the 3D thick plate one refinement below its shipped meshes
 # Prints one JSON line per run (case, variant, wall s, pseudo steps or coupling iterations,
 # results) and appends it to doc/results/steady_settings.jsonl.
 #   usage: doc/results/steady_settings.sh [path/to/fvfsi [RUN_DIRECTORY [REPEATS [CASES...]]]]
+#   environment: VARIANTS (default "as_given steady_settings"); LIMIT: stop a run after this many
+#   seconds (recorded as "stopped at LIMIT s" with the last progress line of its log)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 source doc/results/common.sh
@@ -44,6 +47,10 @@ case_arguments() { # CASE: sets prm and args (the case) and before (its "as give
       prm=prm/kovasznay.prm; args=()
       before=("$before_momentum" "$before_pressure" "$before_corrector" "$before_simple") ;;
     thick_plate) prm=prm/thick_plate.prm; args=(); before=("$before_corrector" "$before_simple") ;;
+    thick_plate_h025) # one refinement below the shipped meshes (fsi_3d.md's middle row)
+      prm=prm/thick_plate.prm
+      args=(--set "Mesh/Generator arguments=0.025" --set "Solid mesh/Generator arguments=0.0125")
+      before=("$before_corrector" "$before_simple") ;;
     *) echo "unknown case $1" >&2; exit 1 ;;
   esac
 }
@@ -51,19 +58,22 @@ case_arguments() { # CASE: sets prm and args (the case) and before (its "as give
 for r in $(seq "$repeats"); do
   for c in "${cases[@]}"; do
     case_arguments "$c"
-    for variant in as_given steady_settings; do
+    for variant in ${VARIANTS:-as_given steady_settings}; do
       dir="$runs/$c-$variant-$r"
       extra=()
       if [ $variant = as_given ]; then for b in "${before[@]}"; do extra+=(--set "$b"); done; fi
-      "$fvfsi" "$prm" "${args[@]}" "${extra[@]}" --set "Output directory=$dir" \
+      limit=(); [ -z "${LIMIT:-}" ] || limit=(timeout "$LIMIT")
+      "${limit[@]}" "$fvfsi" "$prm" "${args[@]}" "${extra[@]}" --set "Output directory=$dir" \
         --set "Plot history=false" > "$dir.log" 2>&1 || true
-      /usr/bin/python3 - "$dir" "$c" "$variant" "$r" "$(machine_line)" <<'EOP' | tee -a "$jsonl"
+      /usr/bin/python3 - "$dir" "$c" "$variant" "$r" "$(machine_line)" "${LIMIT:-}" <<'EOP' | tee -a "$jsonl"
 import json, sys
-d, case, variant, r, machine = sys.argv[1:6]
+d, case, variant, r, machine, limit = sys.argv[1:7]
 try:
     s = json.load(open(d + "/summary.json"))
 except Exception:
-    s = {"status": "no summary"}
+    progress = [l.strip() for l in open(d + ".log") if "pseudo" in l or "coupling iteration" in l]
+    s = {"status": "stopped at %s s" % limit if limit else "no summary",
+         "error": progress[-1] if progress else None, "wall_seconds": float(limit) if limit else None}
 res = s.get("results", {})
 keep = {k: res[k] for k in ("drag", "lift", "coupling_iterations", "fluid_pseudo_steps",
                            "time_steps", "point_A_displacement", "max_velocity_error",
