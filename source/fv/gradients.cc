@@ -11,19 +11,14 @@ namespace fvfsi
   template <int dim>
   GaussGreenGradient<dim>::GaussGreenGradient(const FVGeometry<dim>& geometry) : geometry(geometry)
   {
-    reinit();
-  }
-
-  template <int dim>
-  void GaussGreenGradient<dim>::reinit()
-  {
+    // The topology, which mesh motion does not change: per owned cell its vertices (the entries
+    // start[c]..start[c+1] of vertex and coefficient) and, in the order of Eq. 37's sum, which
+    // entry each of its faces' vertices adds to.
     start = {0};
-    vertex.clear();
-    coefficient.clear();
+    term_start = {0};
     for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
     {
       const auto& cell_vertices = geometry.cell_vertices(c);
-      std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell> sum;
       for (const unsigned int f : geometry.cell_faces(c))
       {
         const auto& face = geometry.faces[f];
@@ -33,16 +28,33 @@ namespace fvfsi
           if (it == cell_vertices.end())
             throw std::logic_error("GaussGreenGradient: a face vertex that is not a cell vertex "
                                    "(fvfsi needs conforming meshes)");
-          sum[it - cell_vertices.begin()] +=
-            (face.P == c ? 1.0 : -1.0) * face.gauss_green_weight[i] / geometry.cell_volume[c];
+          terms.push_back(
+            {f, i, static_cast<unsigned int>(start[c] + (it - cell_vertices.begin()))});
         }
       }
-      for (unsigned int i = 0; i < cell_vertices.size(); ++i)
-      {
-        vertex.push_back(cell_vertices[i]);
-        coefficient.push_back(sum[i]);
-      }
+      vertex.insert(vertex.end(), cell_vertices.begin(), cell_vertices.end());
       start.push_back(vertex.size());
+      term_start.push_back(terms.size());
+    }
+    coefficient.resize(vertex.size());
+    reinit();
+  }
+
+  template <int dim>
+  void GaussGreenGradient<dim>::reinit()
+  {
+    // Eq. 37 as weights of the vertex values: sum over the cell's faces of +-(face weight) / V_P.
+    for (unsigned int c = 0; c < geometry.n_owned_cells(); ++c)
+    {
+      for (unsigned int k = start[c]; k < start[c + 1]; ++k)
+        coefficient[k] = Tensor<1, dim>();
+      for (unsigned int t = term_start[c]; t < term_start[c + 1]; ++t)
+      {
+        const auto& face = geometry.faces[terms[t].face];
+        coefficient[terms[t].entry] += (face.P == c ? 1.0 : -1.0) *
+                                       face.gauss_green_weight[terms[t].face_vertex] /
+                                       geometry.cell_volume[c];
+      }
     }
   }
 

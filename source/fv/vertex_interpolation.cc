@@ -56,18 +56,13 @@ namespace fvfsi
   {
     cell_coefficient.resize(stencil_cell.size());
     face_coefficient.resize(stencil_face.size());
-    cell_quadratic.resize(stencil_cell.size());
-    face_quadratic.resize(stencil_face.size());
+    quadratic_current = false; // computed by subtract_quadratic_terms() when it is first called
     std::vector<Point<dim>> r;
     std::vector<double> w;
     for (unsigned int i = 0; i < vertex_list.size(); ++i)
     {
       const Point<dim>& x_v = geometry.vertices()[vertex_list[i]];
-      r.clear();
-      for (unsigned int j = cell_start[i]; j < cell_start[i + 1]; ++j)
-        r.push_back(geometry.centroid[stencil_cell[j]]);
-      for (unsigned int j = face_start[i]; j < face_start[i + 1]; ++j)
-        r.push_back(geometry.faces[stencil_face[j]].centre);
+      stencil_points(i, r);
 
       // Eq. 41: weighted reference point r_i0, with w_ij = 1 / |r_ij - x_v|^2.
       w.resize(r.size());
@@ -92,25 +87,54 @@ namespace fvfsi
       for (unsigned int j = 0; j < r.size(); ++j)
       {
         const double coefficient = w[j] / sum_w + w[j] * (a * (r[j] - r0));
-        std::array<double, CellHessian<dim>::n_components> quadratic;
+        if (j < n_cells)
+          cell_coefficient[cell_start[i] + j] = coefficient;
+        else
+          face_coefficient[face_start[i] + j - n_cells] = coefficient;
+      }
+    }
+  }
+
+  template <int dim>
+  void VertexInterpolation<dim>::stencil_points(const unsigned int i,
+                                                std::vector<Point<dim>>& r) const
+  {
+    r.clear();
+    for (unsigned int j = cell_start[i]; j < cell_start[i + 1]; ++j)
+      r.push_back(geometry.centroid[stencil_cell[j]]);
+    for (unsigned int j = face_start[i]; j < face_start[i + 1]; ++j)
+      r.push_back(geometry.faces[stencil_face[j]].centre);
+  }
+
+  template <int dim>
+  void VertexInterpolation<dim>::compute_quadratic_terms() const
+  {
+    // a_j 1/2 s_k s_l per stencil entry, s = r_j - x_v (a moving mesh's fluid never asks for
+    // them: computed here, once per reinit(), only for a caller of subtract_quadratic_terms()).
+    cell_quadratic.resize(stencil_cell.size());
+    face_quadratic.resize(stencil_face.size());
+    std::vector<Point<dim>> r;
+    for (unsigned int i = 0; i < vertex_list.size(); ++i)
+    {
+      const Point<dim>& x_v = geometry.vertices()[vertex_list[i]];
+      stencil_points(i, r);
+      const unsigned int n_cells = cell_start[i + 1] - cell_start[i];
+      for (unsigned int j = 0; j < r.size(); ++j)
+      {
+        const bool cell = j < n_cells;
+        const double coefficient = cell ? cell_coefficient[cell_start[i] + j]
+                                        : face_coefficient[face_start[i] + j - n_cells];
+        auto& quadratic =
+          cell ? cell_quadratic[cell_start[i] + j] : face_quadratic[face_start[i] + j - n_cells];
         const Tensor<1, dim> s = r[j] - x_v;
         for (unsigned int k = 0; k < quadratic.size(); ++k)
         {
           const auto ab = SymmetricTensor<2, dim>::unrolled_to_component_indices(k);
           quadratic[k] = coefficient * (ab[0] == ab[1] ? 0.5 : 1.0) * s[ab[0]] * s[ab[1]];
         }
-        if (j < n_cells)
-        {
-          cell_coefficient[cell_start[i] + j] = coefficient;
-          cell_quadratic[cell_start[i] + j] = quadratic;
-        }
-        else
-        {
-          face_coefficient[face_start[i] + j - n_cells] = coefficient;
-          face_quadratic[face_start[i] + j - n_cells] = quadratic;
-        }
       }
     }
+    quadratic_current = true;
   }
 
   template <int dim>
@@ -134,6 +158,8 @@ namespace fvfsi
   void VertexInterpolation<dim>::subtract_quadratic_terms(const CellHessian<dim>& hessian,
                                                           std::vector<double>& vertex_values) const
   {
+    if (!quadratic_current)
+      compute_quadratic_terms();
     constexpr unsigned int n_h = CellHessian<dim>::n_components;
     for (unsigned int i = 0; i < vertex_list.size(); ++i)
     {

@@ -32,6 +32,14 @@ namespace fvfsi
     const FVGeometry<dim>& geometry;
     std::vector<unsigned int> start, vertex;
     std::vector<dealii::Tensor<1, dim>> coefficient;
+    /// One term of Eq. 37's sum: face vertex `face_vertex` of face `face` adds to coefficient
+    /// `entry`; cell c's terms are terms[term_start[c]..term_start[c+1]).
+    struct Term
+    {
+      unsigned int face, face_vertex, entry;
+    };
+    std::vector<Term> terms;
+    std::vector<unsigned int> term_start;
   };
 
   /**

@@ -23,7 +23,8 @@ namespace fvfsi
   public:
     explicit VertexInterpolation(const FVGeometry<dim>& geometry);
 
-    /// Recompute the least-squares coefficients; call after FVGeometry::reinit().
+    /// Recompute the least-squares coefficients; call after FVGeometry::reinit(). (The quadratic
+    /// terms of subtract_quadratic_terms() follow at its first call.)
     void reinit();
 
     /// phi at the vertices of the locally owned cells, indexed by triangulation vertex index
@@ -52,9 +53,16 @@ namespace fvfsi
     std::vector<unsigned int> cell_start, stencil_cell;
     std::vector<unsigned int> face_start, stencil_face;
     std::vector<double> cell_coefficient, face_coefficient;
+    /// The points r_j of the stencil of the i-th vertex: its cells' centroids, then its boundary
+    /// faces' centres.
+    void stencil_points(unsigned int i, std::vector<dealii::Point<dim>>& r) const;
     /// Per stencil entry: a_j 1/2 (r_j - x_v)_k (r_j - x_v)_l for H's independent components
     /// (k, l) in CellHessian's order, off-diagonal ones doubled (so that the sum over them with
-    /// H_kl is a_j 1/2 s.H.s).
-    std::vector<std::array<double, CellHessian<dim>::n_components>> cell_quadratic, face_quadratic;
+    /// H_kl is a_j 1/2 s.H.s). A cache of the geometry: made by the first
+    /// subtract_quadratic_terms() after reinit().
+    void compute_quadratic_terms() const;
+    mutable bool quadratic_current = false;
+    mutable std::vector<std::array<double, CellHessian<dim>::n_components>> cell_quadratic,
+      face_quadratic;
   };
 } // namespace fvfsi
