@@ -33,8 +33,9 @@ namespace fvfsi
       "738-cell solid it is slower than AMG, doc/results/performance.md).");
     prm.add_parameter("Residual reduction", reduction,
                       "Stop when the residual has fallen by this factor (per linear solve). "
-                      "Unless given, a steady fluid's solves take 1e-1 (momentum) and 1e-2 "
-                      "(pressure; see the log's steady settings).",
+                      "In `Fluid momentum solver` and `Fluid pressure solver`, a steady run "
+                      "(Fluid/Transient = false) that does not give it takes 1e-1 and 1e-2 (the "
+                      "log's steady settings).",
                       Patterns::Double(0, 1), /*has_to_be_set: a given value is known*/ true);
     add_selection(prm, "Reduction relative to", reduction_reference,
                   {{"initial residual", ReductionReference::initial_residual},
