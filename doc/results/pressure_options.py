@@ -16,7 +16,7 @@ that the machine's drift falls on all alike:
 
 usage (from the project root):
   python3 doc/results/pressure_options.py probe AMG_PROBE HYPRE_PROBE DUMP_DIR [REPEATS]
-  python3 doc/results/pressure_options.py runs FVFSI WORK [ROUNDS [solves|amg]]
+  python3 doc/results/pressure_options.py runs FVFSI WORK [ROUNDS [solves|amg|start]]
 Appends its records to doc/results/pressure_options.jsonl and prints the tables.
 """
 import json
@@ -71,6 +71,17 @@ RUN_GROUPS["amg"] = [
     ("Non-orthogonal correctors = 0", ["Fluid/Non-orthogonal correctors=0"]),
     ("Non-orthogonal correctors = 0, AMG smoother sweeps = 1", ["Fluid/Non-orthogonal correctors=0",
                                                                 "Fluid pressure solver/AMG smoother sweeps=1"]),
+]
+
+# The start value of a step's first pressure solve (Fluid/Pressure extrapolation), with the
+# file's one non-orthogonal corrector; the runs with every corrector solved to 1e-6 tell which
+# start ends nearer the tightly solved step.
+RUN_GROUPS["start"] = [
+    ("the file (1 non-orthogonal corrector)", []),
+    ("Pressure extrapolation = true", ["Fluid/Pressure extrapolation=true"]),
+    ("Corrector residual reduction = 1e-6", ["Fluid pressure solver/Corrector residual reduction=1e-6"]),
+    ("Pressure extrapolation = true, Corrector residual reduction = 1e-6",
+     ["Fluid/Pressure extrapolation=true", "Fluid pressure solver/Corrector residual reduction=1e-6"]),
 ]
 
 

@@ -95,6 +95,14 @@ namespace fvfsi
                       "extrapolated flux 2 F^n - F^(n-1) (second order in time with one outer "
                       "loop); false: with F^n, a first-order lag as in OpenFOAM's PISO.",
                       Patterns::Bool());
+    prm.add_parameter("Pressure extrapolation", pressure_extrapolation,
+                      "Transient: the first pressure solve of a time step starts from p "
+                      "extrapolated from the last two steps (2 p^n - p^(n-1) for equal steps) "
+                      "instead of p^n. A start value only: the equations are the same, and with "
+                      "`Reduction relative to = initial residual` (the default) a better start "
+                      "ends nearer the solution, not in fewer iterations "
+                      "(doc/results/performance.md, section 15).",
+                      Patterns::Bool());
     prm.add_parameter("Pressure correctors", pressure_correctors,
                       "PISO pressure corrections per outer loop, at least (steady: exactly).",
                       Patterns::Integer(1, 100));

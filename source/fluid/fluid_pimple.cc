@@ -78,9 +78,11 @@ namespace fvfsi
       const bool may_be_last = k >= least;
       if (may_be_last && k < most)
         F_before_corrector = F;
-      compute_predicted_fluxes();
+      compute_predicted_fluxes(k == 1);
       if (simplec())
         grad_p_before = grad_p;
+      if (use_p_extrapolated && outer == 0 && k == 1)
+        p = p_extrapolated; // a start value only (Fluid/Pressure extrapolation)
       solve_pressure(last && may_be_last);
       correct_fluxes();
       update_pressure_boundary_values();

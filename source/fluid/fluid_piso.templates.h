@@ -226,9 +226,57 @@ namespace fvfsi
   }
 
   template <int dim>
-  void FluidSolver<dim>::compute_predicted_fluxes()
+  void FluidSolver<dim>::compute_flux_parts()
+  {
+    // The parts of F*_f that the correctors of one outer loop share (they read only the old
+    // levels, the mesh, the loop's coefficients and its velocity gradients): the old fluxes
+    // c1 r1_f F^o - c2 r2_f F^oo, and the skewness correction m . (grad u)_f of (h / a*)_f.
+    const auto [c0, c1, c2] = time_coefficients();
+    (void)c0;
+    for (const unsigned int f : evaluated_faces(geometry)) // as for_each_face, see face_loop.h
+    {
+      const auto& face = geometry.faces[f];
+      if (face.N == invalid_cell && conditions.type(f) != Type::outlet)
+        continue;
+      // m from the interpolation point to the face centre; the old velocities at the face.
+      const unsigned int P = face.P, N = face.N;
+      Tensor<1, dim> m, u_o, u_oo;
+      std::array<Tensor<1, dim>, dim> grad;
+      if (N == invalid_cell)
+      {
+        m = face.centre - geometry.centroid[P];
+        for (unsigned int j = 0; j < dim; ++j)
+          grad[j] = grad_u[j][P];
+        u_o = u_levels.o[P];
+        u_oo = u_levels.oo[P];
+      }
+      else
+      {
+        m = face.centre - face.interpolate(geometry.centroid[P], geometry.centroid[N]);
+        for (unsigned int j = 0; j < dim; ++j)
+          grad[j] = face.interpolate(grad_u[j][P], grad_u[j][N]);
+        u_o = face.interpolate(u_levels.o[P], u_levels.o[N]);
+        u_oo = face.interpolate(u_levels.oo[P], u_levels.oo[N]);
+      }
+      for (unsigned int j = 0; j < dim; ++j)
+        h_skewness[f][j] = m * grad[j];
+      // Old fluxes carried to the new face: F^o + u^o_f . (S_f - S_f^o) (exactly F^o on a fixed
+      // mesh), weighted by the volume ratios r1_f, r2_f.
+      const double F_o = F_levels.o[f] + u_o * (face.S - S_levels.o[f]);
+      const double F_oo = F_levels.oo[f] + u_oo * (face.S - S_levels.oo[f]);
+      const auto r = volume_ratios(f);
+      // Steady: the old flux is the last pseudo step's.
+      const double c1_f = prm.transient ? c1 * r[0] : c0_face[f];
+      F_old_part[f] = c1_f * F_o - c2 * r[1] * F_oo;
+    }
+  }
+
+  template <int dim>
+  void FluidSolver<dim>::compute_predicted_fluxes(const bool new_outer_loop)
   {
     TimerOutput::Scope scope(timer_output, "predicted fluxes");
+    if (new_outer_loop)
+      compute_flux_parts();
     // h_P = (B^rest_P - sum_N A_PN u_N) / V_P with the latest u.
     std::vector<double> off_diagonal;
     for (unsigned int j = 0; j < dim; ++j)
@@ -251,43 +299,21 @@ namespace fvfsi
         F_star[f] = conditions.type(f) == Type::velocity_inlet ? face.S * boundary_u[f] : F_mesh[f];
         continue;
       }
-      // (h / a*)_f with the skewness correction m . (grad u)_f, m from the interpolation point
-      // to the face centre; the old velocities at the face.
+      // (h / a*)_f with the skewness correction of compute_flux_parts().
       const unsigned int P = face.P, N = face.N;
-      Tensor<1, dim> h_by_a, m, u_o, u_oo;
-      std::array<Tensor<1, dim>, dim> grad;
-      if (N == invalid_cell)
-      {
-        h_by_a = h[P] / a_star.local_element(P);
-        m = face.centre - geometry.centroid[P];
-        for (unsigned int j = 0; j < dim; ++j)
-          grad[j] = grad_u[j][P];
-        u_o = u_levels.o[P];
-        u_oo = u_levels.oo[P];
-      }
-      else
-      {
-        h_by_a =
-          face.w * h[P] / a_star.local_element(P) + (1 - face.w) * h[N] / a_star.local_element(N);
-        m = face.centre - face.interpolate(geometry.centroid[P], geometry.centroid[N]);
-        for (unsigned int j = 0; j < dim; ++j)
-          grad[j] = face.interpolate(grad_u[j][P], grad_u[j][N]);
-        u_o = face.interpolate(u_levels.o[P], u_levels.o[N]);
-        u_oo = face.interpolate(u_levels.oo[P], u_levels.oo[N]);
-      }
+      Tensor<1, dim> h_by_a = N == invalid_cell ? h[P] / a_star.local_element(P)
+                                                : face.w * h[P] / a_star.local_element(P) +
+                                                    (1 - face.w) * h[N] / a_star.local_element(N);
       for (unsigned int j = 0; j < dim; ++j)
-        h_by_a[j] += m * grad[j];
-      // Old fluxes carried to the new face: F^o + u^o_f . (S_f - S_f^o) (exactly F^o on a fixed
-      // mesh), weighted by the volume ratios r1_f, r2_f.
-      const double F_o = F_levels.o[f] + u_o * (face.S - S_levels.o[f]);
-      const double F_oo = F_levels.oo[f] + u_oo * (face.S - S_levels.oo[f]);
-      const auto r = volume_ratios(f);
-      // Steady: the old flux is the last pseudo step's; transient outer loops relaxed by
-      // alpha < 1: also the pseudo time term's, the outer loop's first flux F_outer_start.
-      const double c1_f = prm.transient ? c1 * r[0] : c0_face[f];
-      F_star[f] = gamma_p[f] * (c1_f * F_o - c2 * r[1] * F_oo + a_star_f[f] * (face.S * h_by_a));
+        h_by_a[j] += h_skewness[f][j];
+      F_star[f] = gamma_p[f] * (F_old_part[f] + a_star_f[f] * (face.S * h_by_a));
+      // Transient outer loops relaxed by alpha < 1: also the pseudo time term's, the outer
+      // loop's first flux F_outer_start.
       if (prm.transient && outer_alpha < 1)
+      {
+        const auto r = volume_ratios(f);
         F_star[f] += gamma_p[f] * (c0_face[f] - c1 * r[0] + c2 * r[1]) * F_outer_start[f];
+      }
       // SIMPLEC: + (Gamma~_f - Gamma_f) S_f (n.grad p)_f with the pressure of the last corrector,
       // so that F = F* - Gamma~_f S_f (n.grad p)_f is SIMPLE's flux once p stops changing.
       if (gamma_c[f] != gamma_p[f])

@@ -55,8 +55,9 @@ namespace fvfsi
     pressure_rhs = geometry.make_cell_vector();
     const unsigned int n_faces = geometry.faces.size();
     for (auto* field : {&F, &F_mesh, &F_star, &gamma_p, &gamma_c, &a_star_f, &boundary_p, &swept,
-                        &swept_old, &F_before_corrector, &F_outer_start})
+                        &swept_old, &F_before_corrector, &F_outer_start, &F_old_part})
       field->assign(n_faces, 0.0);
+    h_skewness.resize(n_faces);
     F_levels.start(F);
     V_levels.start(geometry.cell_volume);
     S_levels.o.resize(n_faces);
@@ -352,6 +353,17 @@ namespace fvfsi
         u.set(c, u_levels.extrapolated({w1, w2}, c));
       u.update_ghost_values();
     }
+    // The first pressure solve's start value: w1 p^n + w2 p^(n-1), p^(n-1) being the previous
+    // step's p_start. Only a start value (set in solve_outer_iteration after the predicted
+    // fluxes): the momentum predictor and the boundary values still see p^n.
+    use_p_extrapolated =
+      prm.transient && prm.pressure_extrapolation && clock.step() > 1 && p_start_is_previous_level;
+    if (use_p_extrapolated)
+    {
+      const auto [w1, w2] = clock.extrapolation_weights();
+      p_extrapolated = p;
+      p_extrapolated.sadd(w1, w2, p_start);
+    }
     u_start = u;
     p_start = p;
     F_start = F;
@@ -418,6 +430,7 @@ namespace fvfsi
                                                  0.0)));
     last_error = Utilities::MPI::max(max_e, geometry.comm()) / std::max(scale_U, 1e-300);
     shift_time_levels();
+    p_start_is_previous_level = true;
     last_change = max_du / std::max(max_u, 1e-300);
   }
 
@@ -452,6 +465,7 @@ namespace fvfsi
         g.update_ghost_values();
       p.update_ghost_values();
       update_volume_ratios();
+      p_start_is_previous_level = false; // p^(n-1) is not kept
     }
   }
 

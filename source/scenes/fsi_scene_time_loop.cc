@@ -19,8 +19,6 @@ namespace fvfsi
   void FsiScene<dim>::run_transient()
   {
     unsigned int total = clock.last_step();
-    const auto last_fluid_alone_step = static_cast<unsigned int>(
-      std::min<double>(total, std::floor(prm.coupling.start_time / clock.time_step() + 1e-9)));
     Progress progress;
     if (result.n_coupled_steps > 0) // restarted in the coupled phase
       progress.new_phase(clock.step());
@@ -48,7 +46,7 @@ namespace fvfsi
       clock.adapt_time_step(fluid->courant_number(), fluid->step_error());
       total = clock.last_step(); // the steps to the end time at the present dt
       if (step % fluid_scene_parameters.progress_interval == 0 || clock.at_end())
-        print_progress(step, total, iterations, last_fluid_alone_step, progress);
+        print_progress(step, total, iterations, last_fluid_alone_step(total), progress);
       if (fluid_scene_parameters.output_interval > 0 &&
           step % fluid_scene_parameters.output_interval == 0)
         output_results();
@@ -100,6 +98,15 @@ namespace fvfsi
   }
 
   template <int dim>
+  unsigned int FsiScene<dim>::last_fluid_alone_step(const unsigned int total) const
+  {
+    // The step that reaches Coupling/Start time at the present dt (adaptive steps change it).
+    const double left = std::max(prm.coupling.start_time - clock.time(), 0.0);
+    return std::min<unsigned int>(
+      total, clock.step() + static_cast<unsigned int>(std::floor(left / clock.time_step() + 1e-9)));
+  }
+
+  template <int dim>
   void FsiScene<dim>::print_progress(const unsigned int step, const unsigned int total,
                                      const unsigned int iterations,
                                      const unsigned int last_fluid_alone_step,
@@ -120,11 +127,13 @@ namespace fvfsi
   template void FsiScene<2>::run_transient();
   template bool FsiScene<2>::halve_time_step(unsigned int, unsigned int&, const std::exception&);
   template void FsiScene<2>::count_time_step(unsigned int, unsigned int, double, Progress&);
+  template unsigned int FsiScene<2>::last_fluid_alone_step(unsigned int) const;
   template void FsiScene<2>::print_progress(unsigned int, unsigned int, unsigned int, unsigned int,
                                             const Progress&) const;
   template void FsiScene<3>::run_transient();
   template bool FsiScene<3>::halve_time_step(unsigned int, unsigned int&, const std::exception&);
   template void FsiScene<3>::count_time_step(unsigned int, unsigned int, double, Progress&);
+  template unsigned int FsiScene<3>::last_fluid_alone_step(unsigned int) const;
   template void FsiScene<3>::print_progress(unsigned int, unsigned int, unsigned int, unsigned int,
                                             const Progress&) const;
 } // namespace fvfsi

@@ -61,7 +61,8 @@ namespace
      {{"Mesh/Global refinements", "1"}, {"Solid mesh/Global refinements", "1"}}},
     {"turek_hron_cfd3.prm", {{"Mesh/Generator arguments", "12"}}},
     {"turek_hron_fsi2.prm", turek_hron_fsi_coarse},
-    {"turek_hron_fsi3.prm", turek_hron_fsi_coarse}};
+    {"turek_hron_fsi3.prm", turek_hron_fsi_coarse},
+    {"turek_hron_fsi3_fast.prm", turek_hron_fsi_coarse}};
 
   /// What the signal handlers print: the mutation being run.
   char current_mutation[1024] = "";

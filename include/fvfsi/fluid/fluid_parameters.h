@@ -50,8 +50,11 @@ namespace fvfsi
     double outer_tolerance = 0;
     /// Under-relaxation alpha of the momentum equation in every outer loop but the final one.
     double outer_relaxation = 1;
-    bool flux_extrapolation = true;       ///< BDF2: first outer loop convects with 2 F^n - F^(n-1)
-    unsigned int pressure_correctors = 2; ///< PISO pressure correctors per outer loop, at least
+    bool flux_extrapolation = true; ///< BDF2: first outer loop convects with 2 F^n - F^(n-1)
+    /// The first pressure solve of a step starts from p extrapolated from the last two steps
+    /// (a start value only: the step's equations do not change).
+    bool pressure_extrapolation = false;
+    unsigned int pressure_correctors = 2;     ///< PISO pressure correctors per outer loop, at least
     unsigned int max_pressure_correctors = 6; ///< ... and at most (transient)
     /// More correctors while the last changed the face velocities by more than this, relative.
     double pressure_corrector_tolerance = 1e-3;

@@ -254,7 +254,10 @@ namespace fvfsi
     bool simplec() const { return !prm.transient && prm.consistent_coupling; }
     /// a~_P = a_P - H1_P (SIMPLEC) or a_P, into a_tilde.
     void compute_consistent_coefficients();
-    void compute_predicted_fluxes();
+    /// F*_f of a pressure corrector (Rhie-Chow); `new_outer_loop`: first compute the parts
+    /// every corrector of the outer loop shares (compute_flux_parts()).
+    void compute_predicted_fluxes(bool new_outer_loop);
+    void compute_flux_parts();
     /// `last`: the last pressure corrector of the time step, whose last solve gets the full
     /// Residual reduction (the others: Corrector residual reduction).
     void solve_pressure(bool last);
@@ -341,6 +344,12 @@ namespace fvfsi
     // p_b at walls), so that every solve of the step starts from the same boundary values too.
     CellVectorField<dim> u_start;
     CellVector p_start;
+    // Fluid/Pressure extrapolation: the start value of the step's first pressure solve, and
+    // whether p_start still holds the level before the last step (p^(n-1)), i.e. a step ended
+    // since the solver started or was restored.
+    CellVector p_extrapolated;
+    bool p_start_is_previous_level = false;
+    bool use_p_extrapolated = false;
     FaceVector F_start;
     std::array<CellGradient<dim>, dim> grad_u_start;
     CellGradient<dim> grad_p_start;
@@ -363,7 +372,9 @@ namespace fvfsi
     FaceVector a_star_f;         ///< a*_f = 1 / (1 / a*)_f
     std::vector<double> c0_cell; ///< c0 of each owned cell (steady: local pseudo time step)
     FaceVector c0_face;          ///< c0_f (= c1_f: backward Euler or steady)
-    FaceVector F_star, gamma_p;  ///< F_f without its pressure part; Gamma_f = 1 / (c0 + a*_f)
+    FaceVector F_old_part;       ///< c1 r1_f F^o - c2 r2_f F^oo of F*_f (compute_flux_parts())
+    std::vector<dealii::Tensor<1, dim>> h_skewness; ///< m . (grad u_j)_f for each j
+    FaceVector F_star, gamma_p; ///< F_f without its pressure part; Gamma_f = 1 / (c0 + a*_f)
     /// The coefficient of the pressure equation and of the flux correction: Gamma_f, or with
     /// Consistent pressure coupling (steady) SIMPLEC's 1 / (a - H1)_f.
     FaceVector gamma_c;

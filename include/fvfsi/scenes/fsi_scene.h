@@ -127,6 +127,8 @@ namespace fvfsi
     /// Count a converged time step and its coupling iterations in the results.
     void count_time_step(unsigned int step, unsigned int iterations, double wall_seconds,
                          Progress& progress);
+    /// The step that reaches Coupling/Start time if dt stays what it is now (at most `total`).
+    unsigned int last_fluid_alone_step(unsigned int total) const;
     /// The progress line of a time step (every Fluid scene/Progress interval steps).
     void print_progress(unsigned int step, unsigned int total, unsigned int iterations,
                         unsigned int last_fluid_alone_step, const Progress& progress) const;
