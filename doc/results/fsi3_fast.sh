@@ -30,6 +30,7 @@ variant() {
     imvj_newton_nonorth1) settings=("${imvj[@]}" "${newton[@]}" "${nonorth1[@]}") ;;
     imvj_newton_nonorth1_dt1) settings=("${imvj[@]}" "${newton[@]}" "${nonorth1[@]}" "Time/Time step=0.001") ;;
     imvj_newton_nonorth1_courant4) settings=("${imvj[@]}" "${newton[@]}" "${nonorth1[@]}" "Time/Adaptive=Courant" "Time/Max Courant number=4") ;;
+    imvj_nonorth1_courant4) settings=("${imvj[@]}" "${nonorth1[@]}" "Time/Adaptive=Courant" "Time/Max Courant number=4") ;;
     *) echo "unknown variant $1" >&2; exit 1 ;;
   esac
 }
