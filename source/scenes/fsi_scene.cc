@@ -354,7 +354,11 @@ namespace fvfsi
           << solid_fv->n_global_cells() << " cells ("
           << selection_name(SolidParameters::model_names, solid_parameters.model) << "), interface "
           << interface->fluid_side().n_faces() << " fluid / " << interface->solid_side().n_faces()
-          << " solid faces, coupling " << prm.coupling.method << "\n";
+          << " solid faces, coupling " << prm.coupling.method;
+    if (!steady && prm.coupling.start_time > 0)
+      pcout << " from Coupling/Start time = " << prm.coupling.start_time
+            << " s (before it the fluid runs alone on the fixed mesh)";
+    pcout << "\n";
     const auto [least, most] = interface->coverage_range();
     pcout << "fvfsi: interface: the fluid faces cover each solid face " << least << " to " << most
           << " times (1 where the sides match), the fluid points lie within "
@@ -380,6 +384,9 @@ namespace fvfsi
           << " coupling iterations per coupled step (max " << result.max_coupling_iterations
           << ")\n"
           << std::setprecision(6);
+    if (result.n_coupled_steps == 0 && prm.coupling.start_time > 0)
+      pcout << "fvfsi: the run ended before Coupling/Start time = " << prm.coupling.start_time
+            << " s: the fluid ran alone on the fixed mesh, the solid stayed at rest\n";
   }
 
   template <int dim>
