@@ -8,7 +8,11 @@
 #include <fvfsi/io/checkpoint.h>
 #include <fvfsi/mesh/mesh_builder.h>
 
+#include <boost/crc.hpp>
+
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace fvfsi
@@ -360,11 +364,68 @@ namespace fvfsi
     MPI_Barrier(comm);
   }
 
+  namespace
+  {
+    /// The size [bytes] and CRC-32 of a file.
+    std::pair<std::uintmax_t, std::uint32_t> size_and_crc(const std::filesystem::path& file)
+    {
+      boost::crc_32_type crc;
+      std::ifstream in(file, std::ios::binary);
+      std::vector<char> buffer(1 << 20);
+      while (in)
+      {
+        in.read(buffer.data(), buffer.size());
+        crc.process_bytes(buffer.data(), in.gcount());
+      }
+      return {std::filesystem::file_size(file), crc.checksum()};
+    }
+
+    /// `<directory>/manifest`: a line "SIZE CRC NAME" per file of the directory (NAME relative).
+    void write_manifest(const std::string& directory)
+    {
+      std::ostringstream lines;
+      for (const auto& entry : std::filesystem::recursive_directory_iterator(directory))
+        if (entry.is_regular_file())
+        {
+          const auto [size, crc] = size_and_crc(entry.path());
+          lines << size << ' ' << crc << ' '
+                << std::filesystem::relative(entry.path(), directory).string() << '\n';
+        }
+      std::ofstream(directory + "/manifest") << lines.str();
+    }
+
+    /// What differs between the files of `directory` and its manifest ("" if nothing, or if
+    /// there is no manifest: a checkpoint written before manifests).
+    std::string manifest_difference(const std::string& directory)
+    {
+      std::ifstream manifest(directory + "/manifest");
+      std::uintmax_t size;
+      std::uint32_t crc;
+      std::string name;
+      while (manifest >> size >> crc && std::getline(manifest >> std::ws, name))
+      {
+        const std::filesystem::path file = std::filesystem::path(directory) / name;
+        if (!std::filesystem::exists(file))
+          return "its file `" + name + "` is missing";
+        const auto [actual_size, actual_crc] = size_and_crc(file);
+        if (actual_size != size)
+          return "its file `" + name + "` has " + std::to_string(actual_size) + " bytes where " +
+                 std::to_string(size) + " were written (cut short or replaced)";
+        if (actual_crc != crc)
+          return "its file `" + name +
+                 "` has the size it was written with but other contents "
+                 "(CRC-32 differs)";
+      }
+      return "";
+    }
+  } // namespace
+
   void CheckpointFiles::finish_writing(const MPI_Comm comm) const
   {
     MPI_Barrier(comm);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
     {
+      write_manifest(directory + ".new");
       // The old checkpoint is removed only once the new one is complete.
       std::filesystem::remove_all(directory + ".old");
       if (std::filesystem::exists(directory))
@@ -375,11 +436,21 @@ namespace fvfsi
     MPI_Barrier(comm);
   }
 
-  void CheckpointFiles::check_readable(const std::string& parameter) const
+  void CheckpointFiles::check_readable(const std::string& parameter, const MPI_Comm comm) const
   {
     if (!std::filesystem::exists(path("state")))
       throw std::runtime_error(parameter + ": no checkpoint in `" + directory +
                                "` (a run writes one every `Checkpoint interval` time steps)");
+    // A damaged file would stop the restart inside p4est or Boost's archive with a message
+    // that names neither the file nor the parameter.
+    std::string difference;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      difference = manifest_difference(directory);
+    difference = Utilities::MPI::broadcast(comm, difference, 0);
+    if (!difference.empty())
+      throw std::runtime_error(parameter + ": the checkpoint in `" + directory +
+                               "` is damaged: " + difference +
+                               "; restart from another checkpoint or run from the start");
   }
 
   template <int dim>

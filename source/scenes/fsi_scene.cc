@@ -57,7 +57,7 @@ namespace fvfsi
     const CheckpointFiles restart(checkpoints.restart_from);
     if (!checkpoints.restart_from.empty())
     {
-      restart.check_readable("Restart from");
+      restart.check_readable("Restart from", comm);
       fluid_restart = load_mesh(restart, "fluid_mesh", fluid_mesh_parameters, fluid_tria,
                                 prm_directory, restart_vertices);
     }

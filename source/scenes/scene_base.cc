@@ -42,7 +42,7 @@ namespace fvfsi
     if (restarting())
     {
       const CheckpointFiles restart(checkpoints.restart_from);
-      restart.check_readable("Restart from");
+      restart.check_readable("Restart from", comm);
       restart_archive =
         load_mesh(restart, "mesh", mesh_parameters, triangulation, prm_directory, restart_vertices);
     }

@@ -21,6 +21,9 @@
 // (as in fsi3_coarse (c)) and the force (drag, lift) and u(A) are compared as vectors, to 1e-8 of
 // their largest magnitude: measured force 1.3e-10 and u(A) 2.9e-10, the level at which A's steps
 // 1-10 on one rank already differ from C's on two (the coupling iterations of a step by one).
+// A damaged checkpoint (the solid's A copied, then its largest file cut to half, or one byte of it
+// changed) stops the restart with a message that names `Restart from` and the file, on every rank,
+// before p4est or Boost read it (the manifest of sizes and CRC-32s written with the checkpoint).
 #include <fvfsi/scenes/fluid_scene.h>
 #include <fvfsi/scenes/fsi_scene.h>
 #include <fvfsi/scenes/solid_scene.h>
@@ -32,6 +35,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 using namespace fvfsi_test;
@@ -192,6 +196,54 @@ int main(int argc, char** argv)
     out << "FSI: the restarted run's fluid.pvd lists the 2 earlier and 2 new VTU files, which "
            "exist: "
         << yes_no(found && files[0].find("out_FSI_A") != std::string::npos) << "\n";
+  }
+
+  // Damaged checkpoints: cut short, and changed at the same size.
+  for (const bool cut : {true, false})
+  {
+    const std::string damaged = cut ? "out_damaged_cut" : "out_damaged_byte";
+    std::string file;
+    if (rank == 0)
+    {
+      std::filesystem::remove_all(damaged);
+      std::filesystem::create_directories(damaged);
+      std::filesystem::copy("out_solid_A/checkpoint", damaged + "/checkpoint");
+      std::uintmax_t largest = 0;
+      for (const auto& entry : std::filesystem::directory_iterator(damaged + "/checkpoint"))
+        if (entry.file_size() > largest)
+          largest = entry.file_size(), file = entry.path().string();
+      if (cut)
+        std::filesystem::resize_file(file, largest / 2);
+      else
+      {
+        std::fstream f(file, std::ios::in | std::ios::out | std::ios::binary);
+        f.seekg(largest / 2);
+        const char byte = static_cast<char>(f.get() ^ 0x5a);
+        f.seekp(largest / 2);
+        f.put(byte);
+      }
+      file = std::filesystem::path(file).filename().string();
+    }
+    MPI_Barrier(MPI_COMM_WORLD);
+    std::string message;
+    try
+    {
+      run(solid, 20, {"Restart from=" + damaged}, MPI_COMM_WORLD, damaged + "_B");
+    }
+    catch (const std::exception& e)
+    {
+      message = e.what();
+    }
+    if (rank == 0)
+    {
+      std::printf("damaged checkpoint: %s\n", message.c_str());
+      out << "solid: a restart from a checkpoint whose largest file is "
+          << (cut ? "cut to half its size" : "changed in one byte")
+          << " stops with a message naming Restart from and the file: "
+          << yes_no(message.find("Restart from") != std::string::npos &&
+                    message.find("`" + file + "`") != std::string::npos)
+          << "\n";
+    }
   }
 
   if (parallel)

@@ -184,10 +184,13 @@ namespace fvfsi
     std::string path(const std::string& name, bool writing = false) const;
     /// Create the temporary directory (rank 0) before the files are written...
     void begin_writing(MPI_Comm comm) const;
-    /// ...and move it over the last checkpoint once they are (collective).
+    /// ...and move it over the last checkpoint once they are (collective), with a `manifest`
+    /// written last: each file's size and CRC-32.
     void finish_writing(MPI_Comm comm) const;
-    /// Throws a clear error if `Restart from` holds no checkpoint.
-    void check_readable(const std::string& parameter) const;
+    /// Throws a clear error if `Restart from` holds no checkpoint, or one whose files differ
+    /// from its manifest (cut short, replaced, missing), naming the file (collective: rank 0
+    /// reads the files, every rank throws the same).
+    void check_readable(const std::string& parameter, MPI_Comm comm) const;
   };
 
   /// A mesh's reference and current vertex positions, then what `state` puts into the archive
